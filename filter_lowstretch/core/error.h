@@ -1,0 +1,38 @@
+// What can go wrong with an input mesh or a run, as one enum with one message per code.
+#pragma once
+#include <string>
+
+namespace lowstretch {
+
+enum class ErrorCode {
+  None = 0,
+  NoFaces,                  // count: vertices
+  IndexOutOfRange,          // count: faces with a bad vertex index
+  RepeatedVertexInFace,     // count: faces that name one vertex twice
+  NonFiniteCoordinates,     // count: referenced vertices with NaN or infinite coordinates
+  NonManifoldEdges,         // count: edges shared by more than two faces
+  InconsistentOrientation,  // count: edges whose two faces disagree on orientation
+  NonManifoldVertices,      // count: vertices whose faces form several fans
+  SeveralComponents,        // count: connected components
+  Closed,                   // count: unused
+  SeveralBoundaryLoops,     // count: boundary loops
+  NotGenusZero,             // count: genus
+  ZeroAreaMesh,             // count: faces (all of them have zero 3D area)
+  InvalidOption,            // count: unused; detail names the option
+  SolverFailed,             // count: pass number
+  Cancelled,                // count: unused
+};
+
+struct Error {
+  ErrorCode code = ErrorCode::None;
+  long long count = 0;
+  std::string detail;  // extra words for InvalidOption and SolverFailed
+  explicit operator bool() const { return code != ErrorCode::None; }
+};
+
+// One line for a person: what was found and what to do about it.
+std::string message(const Error& error);
+// A stable short name for scripts and JSON ("several_boundary_loops").
+const char* code_name(ErrorCode code);
+
+}  // namespace lowstretch

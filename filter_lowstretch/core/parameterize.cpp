@@ -1,0 +1,177 @@
+#include "parameterize.h"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "boundary_map.h"
+#include "disk_mesh.h"
+#include "laplacian_solver.h"
+#include "natural_boundary.h"
+#include "ring_weights.h"
+#include "square_corners.h"
+#include "stretch.h"
+
+namespace lowstretch {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+Error check_options(const Options& o) {
+  if (!(o.exponent > 0 && o.exponent <= 1))
+    return {ErrorCode::InvalidOption, 0, "the exponent must be in (0, 1], got " + std::to_string(o.exponent)};
+  if (o.max_passes < 0)
+    return {ErrorCode::InvalidOption, 0, "max passes must be 0 or more, got " + std::to_string(o.max_passes)};
+  return {};
+}
+
+// Passes are ranked by (flipped + degenerate triangles, L2 stretch over the valid triangles):
+// with a convex boundary there are none, and the rank is the paper's E_s.
+std::pair<int, double> rank(const FaceStretch& s) {
+  double weighted = 0, area = 0;
+  for (Eigen::Index f = 0; f < s.sigma.size(); ++f)
+    if (s.valid(f)) {
+      weighted += s.area_3d(f) * s.sigma(f) * s.sigma(f);
+      area += s.area_3d(f);
+    }
+  const double l2 = area > 0 ? s.normalization * std::sqrt(weighted / area) : std::numeric_limits<double>::infinity();
+  return {s.flipped + s.degenerate, l2};
+}
+
+Error boundary_positions(const DiskMesh& disk, BoundaryShape shape, Eigen::MatrixXd& boundary_uv,
+                         std::vector<std::string>& notes) {
+  switch (shape) {
+    case BoundaryShape::Circle: boundary_uv = circle_boundary(disk); return {};
+    case BoundaryShape::Natural: return natural_boundary(disk, boundary_uv);
+    case BoundaryShape::Square: {
+      const SquareCorners corners = choose_square_corners(disk);
+      if (corners.moved)
+        notes.push_back("square corners moved off the quarter arc lengths so that no boundary triangle collapses");
+      if (corners.collapsed_chords > 0)
+        notes.push_back(std::to_string(corners.collapsed_chords) +
+                        " interior edges join two boundary vertices of one square side whatever the corners: "
+                        "their triangles collapse; use the circle boundary");
+      boundary_uv = square_boundary(disk, corners.corners);
+      return {};
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Options& options) {
+  const Clock::time_point start = Clock::now();
+  Result result;
+  auto report = [&](double fraction, const char* stage) {
+    return !options.progress || options.progress(fraction, stage);
+  };
+  if ((result.error = check_options(options))) return result;
+
+  DiskMesh disk;
+  if ((result.error = make_disk_mesh(V, F, disk))) return result;
+  if (!report(0.02, "boundary")) return result.error = {ErrorCode::Cancelled, 0, ""}, result;
+
+  Eigen::MatrixXd boundary_uv;
+  if ((result.error = boundary_positions(disk, options.boundary, boundary_uv, result.notes))) return result;
+
+  int fallbacks = 0;
+  std::vector<double> weights = initial_weights(disk, options.weights, fallbacks);
+  if (fallbacks > 0)
+    result.notes.push_back(std::to_string(fallbacks) +
+                           " interior vertices have a degenerate one-ring (zero-length edges or zero-area "
+                           "triangles): uniform weights used there");
+
+  LaplacianSolver solver(disk);
+  const int n = int(disk.V.rows());
+  Eigen::MatrixXd uv, best_uv;
+  FaceStretch stretch, best_stretch;
+  std::pair<int, double> best_rank;
+  for (int pass = 0; pass <= options.max_passes; ++pass) {
+    const Clock::time_point pass_start = Clock::now();
+    if (!report(0.05 + 0.9 * pass / (options.max_passes + 1.0), pass == 0 ? "initial parameterization" : "stretch pass"))
+      return result.error = {ErrorCode::Cancelled, 0, ""}, result;
+    if (pass > 0) {
+      // w_ij <- w_ij / sigma_j^eta with sigma from the previous pass, then each row rescaled to
+      // sum 1 (a row's scale does not change its equation; this keeps the values near 1).
+      const Eigen::VectorXd sigma = vertex_stretch(disk.F, n, stretch);
+      for (int i = 0; i < n; ++i) {
+        if (disk.is_boundary[size_t(i)]) continue;
+        double sum = 0;
+        for (int s = disk.ring_start[size_t(i)]; s < disk.ring_start[size_t(i) + 1]; ++s) {
+          weights[size_t(s)] /= std::pow(sigma(disk.ring[size_t(s)]), options.exponent);
+          sum += weights[size_t(s)];
+        }
+        if (sum > 0)
+          for (int s = disk.ring_start[size_t(i)]; s < disk.ring_start[size_t(i) + 1]; ++s) weights[size_t(s)] /= sum;
+      }
+    }
+    if (!solver.solve(weights, boundary_uv, uv))
+      return result.error = {ErrorCode::SolverFailed, pass, "singular or non-finite system"}, result;
+    stretch = face_stretch(disk.V, disk.F, uv);
+    PassMetrics metrics = measure(disk, uv, stretch);
+    metrics.pass = pass;
+    metrics.seconds = seconds_since(pass_start);
+    result.passes.push_back(metrics);
+
+    const std::pair<int, double> this_rank = rank(stretch);
+    if (pass == 0 || this_rank < best_rank) {
+      result.chosen_pass = pass;
+      best_rank = this_rank;
+      best_uv = uv;
+      best_stretch = stretch;
+    } else if (options.stop_when_stretch_rises) {
+      result.stop_reason = StopReason::StretchRose;
+      break;
+    }
+  }
+
+  // Back to the input's rows; unreferenced vertices get zeros.
+  result.uv = Eigen::MatrixXd::Zero(V.rows(), 2);
+  result.vertex_stretch = Eigen::VectorXd::Zero(V.rows());
+  const Eigen::VectorXd sigma = vertex_stretch(disk.F, n, best_stretch);
+  for (int i = 0; i < n; ++i) {
+    result.uv.row(disk.input_vertex[size_t(i)]) = best_uv.row(i);
+    result.vertex_stretch(disk.input_vertex[size_t(i)]) = sigma(i);
+  }
+  result.face_stretch.resize(F.rows());
+  const double inf = std::numeric_limits<double>::infinity();
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    result.face_stretch(f) = best_stretch.valid(f) ? best_stretch.normalization * best_stretch.sigma(f) : inf;
+  result.seconds_total = seconds_since(start);
+  report(1.0, "done");
+  return result;
+}
+
+const char* to_string(BoundaryShape shape) {
+  switch (shape) {
+    case BoundaryShape::Square: return "square";
+    case BoundaryShape::Circle: return "circle";
+    case BoundaryShape::Natural: return "natural";
+  }
+  return "?";
+}
+
+const char* to_string(InitialWeights weights) {
+  switch (weights) {
+    case InitialWeights::Floater: return "floater";
+    case InitialWeights::MeanValue: return "meanvalue";
+    case InitialWeights::Harmonic: return "harmonic";
+  }
+  return "?";
+}
+
+const char* to_string(StopReason reason) {
+  switch (reason) {
+    case StopReason::StretchRose: return "L2 stretch stopped falling";
+    case StopReason::MaxPasses: return "max passes reached";
+  }
+  return "?";
+}
+
+}  // namespace lowstretch

@@ -1,0 +1,62 @@
+// Low-stretch parameterization of a disk-like triangle mesh (Yoshizawa, Belyaev, Seidel 2004,
+// "A fast and simple stretch-minimizing mesh parameterization"):
+//   U0 from shape-preserving weights, then w_ij <- w_ij / sigma_j^eta and solve again,
+//   keeping the pass of lowest L2 stretch.
+#pragma once
+#include <Eigen/Core>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "error.h"
+
+namespace lowstretch {
+
+enum class BoundaryShape { Square, Circle, Natural };
+enum class InitialWeights { Floater, MeanValue, Harmonic };
+enum class StopReason { StretchRose, MaxPasses };
+
+struct Options {
+  BoundaryShape boundary = BoundaryShape::Square;
+  InitialWeights weights = InitialWeights::Floater;
+  double exponent = 1.0;  // eta in (0, 1]: weights are divided by sigma_j^eta each pass
+  int max_passes = 10;    // 0: U0 only; 1: U0 and U1
+  bool stop_when_stretch_rises = true;  // false forces all max_passes (benchmarks)
+  // Called with a fraction in [0, 1] and the current stage; return false to cancel the run.
+  std::function<bool(double fraction, const char* stage)> progress;
+};
+
+// The paper's metrics of one parameterization (design.md section 2). Stretch values are
+// normalized so that an isometry up to scale gives 1; a flipped triangle makes them infinite.
+struct PassMetrics {
+  int pass = 0;
+  double l2_stretch = 0, linf_stretch = 0;
+  double edge_distortion = 0, angle_distortion = 0, area_distortion = 0;
+  int flipped = 0;     // parameter triangles with negative area
+  int degenerate = 0;  // parameter triangles with zero area
+  double seconds = 0;  // wall time of this pass (weights, solve, metrics)
+};
+
+struct Result {
+  Error error;  // error.code != None: nothing below is filled
+  // #V x 2, in [0,1]^2; rows of vertices that no face uses are 0.
+  Eigen::MatrixXd uv;
+  // Per-vertex stretch sigma_i and per-face stretch sigma(T) of the returned pass, normalized
+  // like PassMetrics (0 for unreferenced vertices; infinity for a flipped face).
+  Eigen::VectorXd vertex_stretch, face_stretch;
+  std::vector<PassMetrics> passes;  // every pass computed, including a rejected last one
+  int chosen_pass = 0;              // index into passes of the returned parameterization
+  StopReason stop_reason = StopReason::MaxPasses;
+  double seconds_total = 0;
+  std::vector<std::string> notes;   // things a user should know (moved corners, degenerate faces)
+};
+
+// V: #V x 3 vertex positions; F: #F x 3 vertex indices of counter-clockwise triangles.
+// Vertices that no face uses are ignored (their coordinates may be anything).
+Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Options& options = {});
+
+const char* to_string(BoundaryShape shape);
+const char* to_string(InitialWeights weights);
+const char* to_string(StopReason reason);
+
+}  // namespace lowstretch

@@ -1,0 +1,24 @@
+// Where to put the four corners of the square boundary.
+#pragma once
+#include <array>
+
+#include "disk_mesh.h"
+
+namespace lowstretch {
+
+struct SquareCorners {
+  std::array<int, 4> corners{};  // increasing positions in disk.boundary
+  // Interior edges whose two boundary endpoints still end up on one side (each collapses the
+  // triangles between it and the side): 0 unless no choice of corners avoids it.
+  int collapsed_chords = 0;
+  bool moved = false;            // corners differ from the quarter-arc-length choice
+};
+
+// The paper's choice: the vertices nearest to the quarter arc lengths from the loop's first
+// vertex. An interior edge between two boundary vertices of one side would be mapped onto that
+// side and collapse its triangles; if the quarter choice makes such an edge, the corners are
+// chosen instead so that every such edge has a corner strictly inside both of the boundary arcs
+// it cuts off, with side lengths as close to a quarter as possible (dynamic programming).
+SquareCorners choose_square_corners(const DiskMesh& disk);
+
+}  // namespace lowstretch

@@ -1,0 +1,114 @@
+#include "stretch.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <limits>
+
+namespace lowstretch {
+
+namespace {
+double angle(const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
+const double kInf = std::numeric_limits<double>::infinity();
+}  // namespace
+
+FaceStretch face_stretch(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV) {
+  const Eigen::Index m = F.rows();
+  FaceStretch s;
+  s.area_3d.resize(m);
+  s.area_uv.resize(m);
+  s.sigma.resize(m);
+  s.gamma.resize(m);
+  s.valid.resize(m);
+  double total_uv = 0, total_3d = 0;
+  for (Eigen::Index f = 0; f < m; ++f) {
+    const Eigen::Vector3d p1 = V.row(F(f, 0)), p2 = V.row(F(f, 1)), p3 = V.row(F(f, 2));
+    const double s1 = UV(F(f, 0), 0), s2 = UV(F(f, 1), 0), s3 = UV(F(f, 2), 0);
+    const double t1 = UV(F(f, 0), 1), t2 = UV(F(f, 1), 1), t3 = UV(F(f, 2), 1);
+    s.area_3d(f) = 0.5 * (p2 - p1).cross(p3 - p1).norm();
+    s.area_uv(f) = 0.5 * ((s2 - s1) * (t3 - t1) - (s3 - s1) * (t2 - t1));
+    total_uv += std::abs(s.area_uv(f));
+    total_3d += s.area_3d(f);
+  }
+  // A parameter triangle is degenerate below this area: ~1e-16 of the domain, where rounding
+  // of unit-sized coordinates starts.
+  const double tolerance = 1e-16 * total_uv;
+  for (Eigen::Index f = 0; f < m; ++f) {
+    const Eigen::Vector3d p1 = V.row(F(f, 0)), p2 = V.row(F(f, 1)), p3 = V.row(F(f, 2));
+    const double s1 = UV(F(f, 0), 0), s2 = UV(F(f, 1), 0), s3 = UV(F(f, 2), 0);
+    const double t1 = UV(F(f, 0), 1), t2 = UV(F(f, 1), 1), t3 = UV(F(f, 2), 1);
+    const double a_uv = s.area_uv(f);
+    s.valid(f) = a_uv > tolerance;
+    if (a_uv < -tolerance) ++s.flipped;
+    else if (!s.valid(f)) ++s.degenerate;
+    const double two_area = 2 * std::max(std::abs(a_uv), tolerance > 0 ? tolerance : 1e-300);
+    const Eigen::Vector3d Ss = (p1 * (t2 - t3) + p2 * (t3 - t1) + p3 * (t1 - t2)) / two_area;
+    const Eigen::Vector3d St = (p1 * (s3 - s2) + p2 * (s1 - s3) + p3 * (s2 - s1)) / two_area;
+    const double a = Ss.dot(Ss), b = Ss.dot(St), c = St.dot(St);
+    s.sigma(f) = std::sqrt((a + c) / 2);
+    s.gamma(f) = std::sqrt(((a + c) + std::sqrt((a - c) * (a - c) + 4 * b * b)) / 2);
+  }
+  s.normalization = total_3d > 0 ? std::sqrt(total_uv / total_3d) : 1.0;
+  return s;
+}
+
+Eigen::VectorXd vertex_stretch(const Eigen::MatrixXi& F, int vertex_count, const FaceStretch& s) {
+  Eigen::VectorXd weighted = Eigen::VectorXd::Zero(vertex_count), area = Eigen::VectorXd::Zero(vertex_count);
+  double global_weighted = 0, global_area = 0;
+  for (Eigen::Index f = 0; f < F.rows(); ++f) {
+    const double a = s.area_3d(f), e = a * s.sigma(f) * s.sigma(f);
+    global_weighted += e;
+    global_area += a;
+    for (int k = 0; k < 3; ++k) {
+      weighted(F(f, k)) += e;
+      area(F(f, k)) += a;
+    }
+  }
+  const double global = global_area > 0 ? std::sqrt(global_weighted / global_area) : 1.0;
+  Eigen::VectorXd sigma(vertex_count);
+  for (int i = 0; i < vertex_count; ++i)
+    sigma(i) = s.normalization * (area(i) > 0 ? std::sqrt(weighted(i) / area(i)) : global);
+  return sigma;
+}
+
+PassMetrics measure(const DiskMesh& disk, const Eigen::MatrixXd& UV, const FaceStretch& s) {
+  PassMetrics m;
+  m.flipped = s.flipped;
+  m.degenerate = s.degenerate;
+  const Eigen::Index nf = disk.F.rows();
+  const double total_3d = s.area_3d.sum(), total_uv = s.area_uv.cwiseAbs().sum();
+  if (m.flipped + m.degenerate > 0) {
+    m.l2_stretch = m.linf_stretch = kInf;
+  } else {
+    double weighted = 0;
+    for (Eigen::Index f = 0; f < nf; ++f) weighted += s.area_3d(f) * s.sigma(f) * s.sigma(f);
+    m.l2_stretch = s.normalization * std::sqrt(weighted / total_3d);
+    m.linf_stretch = s.normalization * s.gamma.maxCoeff();
+  }
+
+  double length_3d = 0, length_uv = 0;
+  const Eigen::Index ne = disk.edges.rows();
+  Eigen::VectorXd l3(ne), lu(ne);
+  for (Eigen::Index e = 0; e < ne; ++e) {
+    l3(e) = (disk.V.row(disk.edges(e, 0)) - disk.V.row(disk.edges(e, 1))).norm();
+    lu(e) = (UV.row(disk.edges(e, 0)) - UV.row(disk.edges(e, 1))).norm();
+    length_3d += l3(e);
+    length_uv += lu(e);
+  }
+  for (Eigen::Index e = 0; e < ne; ++e) m.edge_distortion += std::abs(l3(e) / length_3d - lu(e) / length_uv);
+
+  double angle_sum = 0;
+  for (Eigen::Index f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int i = disk.F(f, k), j = disk.F(f, (k + 1) % 3), l = disk.F(f, (k + 2) % 3);
+      const Eigen::Vector3d a = (disk.V.row(j) - disk.V.row(i)).transpose(), b = (disk.V.row(l) - disk.V.row(i)).transpose();
+      const Eigen::Vector3d au(UV(j, 0) - UV(i, 0), UV(j, 1) - UV(i, 1), 0), bu(UV(l, 0) - UV(i, 0), UV(l, 1) - UV(i, 1), 0);
+      angle_sum += std::abs(angle(a, b) - angle(au, bu));
+    }
+  m.angle_distortion = angle_sum / (3.0 * double(nf));
+
+  for (Eigen::Index f = 0; f < nf; ++f)
+    m.area_distortion += std::abs(s.area_3d(f) / total_3d - s.area_uv(f) / total_uv);
+  return m;
+}
+
+}  // namespace lowstretch

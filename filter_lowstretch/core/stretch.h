@@ -1,0 +1,34 @@
+// Stretch of a parameterization (Sander et al. 2001, as design.md section 2 restates it) and the
+// paper's distortion metrics.
+#pragma once
+#include <Eigen/Core>
+
+#include "disk_mesh.h"
+#include "parameterize.h"
+
+namespace lowstretch {
+
+struct FaceStretch {
+  Eigen::VectorXd area_3d;  // per face
+  Eigen::VectorXd area_uv;  // signed parameter area, positive = counter-clockwise
+  // L2 stretch sqrt((a + c) / 2) and Linf stretch (largest singular value) per face, computed
+  // with |A_U| bounded away from zero so that they stay finite; `valid` marks A_U > tolerance.
+  Eigen::VectorXd sigma, gamma;
+  Eigen::Matrix<bool, Eigen::Dynamic, 1> valid;
+  // sqrt(sum |A_U| / sum A_3D): multiplying by it makes an isometry up to scale read 1.
+  double normalization = 1;
+  int flipped = 0, degenerate = 0;
+};
+
+// V: #V x 3, F: #F x 3, UV: #V x 2.
+FaceStretch face_stretch(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV);
+
+// sigma_i = sqrt(sum_T A(T) sigma(T)^2 / sum_T A(T)) over the faces T around each vertex, from
+// the finite per-face values (so usable for reweighting); normalized. A vertex whose faces all
+// have zero 3D area gets the global L2 stretch.
+Eigen::VectorXd vertex_stretch(const Eigen::MatrixXi& F, int vertex_count, const FaceStretch& s);
+
+// The paper's metrics; stretch is infinite when a parameter triangle is flipped or degenerate.
+PassMetrics measure(const DiskMesh& disk, const Eigen::MatrixXd& UV, const FaceStretch& s);
+
+}  // namespace lowstretch

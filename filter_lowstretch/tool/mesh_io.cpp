@@ -1,0 +1,199 @@
+#include "mesh_io.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <fstream>
+#include <new>
+#include <sstream>
+
+#include <wrap/io_trimesh/export_obj.h>
+#include <wrap/io_trimesh/export_ply.h>
+#include <wrap/io_trimesh/import_obj.h>
+#include <wrap/io_trimesh/import_off.h>
+#include <wrap/io_trimesh/import_ply.h>
+
+namespace lowstretch {
+
+namespace {
+
+std::string extension_of(const std::string& path) {
+  const size_t dot = path.find_last_of('.');
+  std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+long long file_size(const std::string& path) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  return in ? (long long)in.tellg() : -1;
+}
+
+// Every vertex takes at least 6 bytes (ASCII "0 0 0\n"; binary: three 4-byte floats) and every
+// face at least 4 (binary: a 1-byte count and three 1-byte indices). A header that declares
+// more than the file can hold is refused before the importer allocates for it.
+bool counts_fit(long long vertices, long long faces, long long size, std::string& error) {
+  if (vertices < 0 || faces < 0 || vertices > (1LL << 31) - 1 || faces > (1LL << 31) - 1 ||
+      vertices * 6 + faces * 4 > size) {
+    error = "the header declares " + std::to_string(vertices) + " vertices and " + std::to_string(faces) +
+            " faces, more than the " + std::to_string(size) + "-byte file can hold: the file is corrupt or cut short";
+    return false;
+  }
+  return true;
+}
+
+bool check_off_header(const std::string& path, long long size, std::string& error) {
+  std::ifstream in(path);
+  std::string word;
+  if (!(in >> word) || word.find("OFF") == std::string::npos) {
+    error = "not an OFF file (no OFF header)";
+    return false;
+  }
+  // Counts may follow on the same line ("OFF 8 6 0"); skip comments.
+  std::string token;
+  long long counts[2];
+  for (int i = 0; i < 2;) {
+    if (!(in >> token)) { error = "the OFF header has no vertex and face counts"; return false; }
+    if (token[0] == '#') { std::getline(in, token); continue; }
+    try {
+      size_t used = 0;
+      counts[i] = std::stoll(token, &used);
+      if (used != token.size()) throw std::invalid_argument(token);
+    } catch (const std::exception&) {
+      error = "the OFF header has a malformed count '" + token + "'";
+      return false;
+    }
+    ++i;
+  }
+  return counts_fit(counts[0], counts[1], size, error);
+}
+
+bool check_ply_header(const std::string& path, long long size, std::string& error) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  long long vertices = 0, faces = 0;
+  if (!std::getline(in, line) || line.compare(0, 3, "ply") != 0) {
+    error = "not a PLY file (no ply header)";
+    return false;
+  }
+  for (int lines = 0; std::getline(in, line) && line.compare(0, 10, "end_header") != 0; ++lines) {
+    if (lines > 10000) { error = "the PLY header never ends"; return false; }
+    std::istringstream words(line);
+    std::string kind, name;
+    long long count = 0;
+    if (words >> kind >> name && kind == "element") {
+      if (!(words >> count)) { error = "the PLY header has a malformed element count"; return false; }
+      if (name == "vertex") vertices = count;
+      if (name == "face") faces = count;
+    }
+  }
+  return counts_fit(vertices, faces, size, error);
+}
+
+// OBJ reports some harmless conditions (a missing .mtl) as codes; for OFF and PLY any code is fatal.
+template <class Importer>
+bool is_critical(int code) { return code != 0; }
+template <>
+bool is_critical<vcg::tri::io::ImporterOBJ<ToolMesh>>(int code) {
+  return vcg::tri::io::ImporterOBJ<ToolMesh>::ErrorCritical(code);
+}
+
+template <class Importer>
+bool run_importer(ToolMesh& mesh, const std::string& path, std::string& error) {
+  int mask = 0;
+  const int code = Importer::Open(mesh, path.c_str(), mask);
+  if (is_critical<Importer>(code)) {
+    error = Importer::ErrorMsg(code);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool read_mesh(const std::string& path, ToolMesh& mesh, std::string& error) {
+  const long long size = file_size(path);
+  if (size < 0) { error = "cannot open " + path; return false; }
+  if (size == 0) { error = path + " is empty"; return false; }
+  const std::string ext = extension_of(path);
+  bool ok = false;
+  try {
+    if (ext == "off") {
+      ok = check_off_header(path, size, error) && run_importer<vcg::tri::io::ImporterOFF<ToolMesh>>(mesh, path, error);
+    } else if (ext == "ply") {
+      ok = check_ply_header(path, size, error) && run_importer<vcg::tri::io::ImporterPLY<ToolMesh>>(mesh, path, error);
+    } else if (ext == "obj") {
+      ok = run_importer<vcg::tri::io::ImporterOBJ<ToolMesh>>(mesh, path, error);
+    } else {
+      error = "unknown file type '." + ext + "': use OFF, OBJ or PLY";
+    }
+  } catch (const std::bad_alloc&) {
+    error = "out of memory while reading: the file declares more than this machine can hold";
+    ok = false;
+  } catch (const std::exception& e) {
+    error = std::string("the reader failed: ") + e.what();
+    ok = false;
+  }
+  if (!ok) error = "cannot read " + path + ": " + error;
+  return ok;
+}
+
+namespace {
+template <class Exporter>
+int run_exporter(ToolMesh& mesh, const std::string& path, int mask) {
+  return Exporter::Save(mesh, path.c_str(), mask);
+}
+}  // namespace
+
+bool write_mesh(const std::string& path, ToolMesh& mesh, const std::string& texture, std::string& error) {
+  const std::string ext = extension_of(path);
+  namespace io = vcg::tri::io;
+  mesh.textures.assign(1, texture);
+  // The temporary keeps the extension: the OBJ exporter names its .mtl after the file.
+  const size_t dot = path.find_last_of('.');
+  const std::string temporary = path.substr(0, dot) + ".partial." + ext;
+  int code = 0;
+  if (ext == "obj") {
+    code = run_exporter<io::ExporterOBJ<ToolMesh>>(mesh, temporary, io::Mask::IOM_WEDGTEXCOORD);
+  } else if (ext == "ply") {
+    code = run_exporter<io::ExporterPLY<ToolMesh>>(
+        mesh, temporary, io::Mask::IOM_WEDGTEXCOORD | io::Mask::IOM_VERTTEXCOORD | io::Mask::IOM_VERTQUALITY | io::Mask::IOM_FACEQUALITY);
+  } else {
+    error = "unknown output type '." + ext + "': use .obj or .ply";
+    return false;
+  }
+  if (code != 0) {
+    std::remove(temporary.c_str());
+    error = "cannot write " + path + " (vcglib exporter error " + std::to_string(code) + ")";
+    return false;
+  }
+  if (ext == "obj") {  // the exporter wrote <temporary>.mtl and named it in the OBJ: rename both
+    const std::string tmp_mtl = temporary + ".mtl", mtl = path + ".mtl";
+    std::ifstream obj_in(temporary);
+    std::stringstream body;
+    body << obj_in.rdbuf();
+    obj_in.close();
+    std::string text = body.str();
+    const std::string old_name = temporary.substr(temporary.find_last_of('/') + 1) + ".mtl";
+    const std::string new_name = path.substr(path.find_last_of('/') + 1) + ".mtl";
+    const size_t at = text.find(old_name);
+    if (at != std::string::npos) text.replace(at, old_name.size(), new_name);
+    std::ofstream obj_out(temporary, std::ios::trunc);
+    obj_out << text;
+    obj_out.close();
+    if (!obj_out || std::rename(tmp_mtl.c_str(), mtl.c_str()) != 0) {
+      std::remove(temporary.c_str());
+      std::remove(tmp_mtl.c_str());
+      error = "cannot write " + mtl;
+      return false;
+    }
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    std::remove(temporary.c_str());
+    error = "cannot write " + path;
+    return false;
+  }
+  return true;
+}
+
+}  // namespace lowstretch

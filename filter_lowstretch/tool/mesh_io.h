@@ -1,0 +1,18 @@
+// Reading and writing meshes with vcglib's importers and exporters (the code MeshLab runs),
+// guarded against files that would make them crash or allocate without bound.
+#pragma once
+#include <string>
+
+#include "tool_mesh.h"
+
+namespace lowstretch {
+
+// OFF, OBJ or PLY (ASCII or binary), by extension. Returns false with a one-line reason.
+bool read_mesh(const std::string& path, ToolMesh& mesh, std::string& error);
+
+// OBJ (per-corner vt and an .mtl naming `texture`) or PLY (wedge texcoords, per-vertex and
+// per-face quality), by extension. Writes to a temporary file first, so a failure leaves no
+// output behind and never changes an existing file.
+bool write_mesh(const std::string& path, ToolMesh& mesh, const std::string& texture, std::string& error);
+
+}  // namespace lowstretch
