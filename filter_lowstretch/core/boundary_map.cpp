@@ -30,8 +30,11 @@ Eigen::MatrixXd circle_boundary(const DiskMesh& disk) {
   return uv;
 }
 
-Eigen::MatrixXd square_boundary(const DiskMesh& disk, const std::array<int, 4>& corners) {
+Eigen::MatrixXd square_boundary(const DiskMesh& disk, const std::array<int, 4>& corners,
+                                const std::array<bool, 4>& bow) {
   static const double corner_uv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  static const double outward[4][2] = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
+  const double bow_height = 0.25;
   const std::vector<double> arc = boundary_arc_lengths(disk);
   const int n = int(disk.boundary.size());
   Eigen::MatrixXd uv(n, 2);
@@ -44,11 +47,13 @@ Eigen::MatrixXd square_boundary(const DiskMesh& disk, const std::array<int, 4>& 
       const double t = span > 0 ? (arc_at(i) - arc_at(from)) / span : 0.0;
       const double* a = corner_uv[side];
       const double* b = corner_uv[(side + 1) % 4];
-      uv(i % n, 0) = a[0] + t * (b[0] - a[0]);
-      uv(i % n, 1) = a[1] + t * (b[1] - a[1]);
+      const double bulge = bow[size_t(side)] ? 4 * bow_height * t * (1 - t) : 0.0;
+      uv(i % n, 0) = a[0] + t * (b[0] - a[0]) + bulge * outward[side][0];
+      uv(i % n, 1) = a[1] + t * (b[1] - a[1]) + bulge * outward[side][1];
     }
   }
-  return uv;
+  const Eigen::RowVector2d lo = uv.colwise().minCoeff(), hi = uv.colwise().maxCoeff();
+  return (uv.rowwise() - lo) / (hi - lo).maxCoeff();
 }
 
 }  // namespace lowstretch

@@ -17,6 +17,10 @@ Eigen::MatrixXd circle_boundary(const DiskMesh& disk);
 
 // Boundary loop on the unit square with the loop positions `corners` (increasing) at the
 // corners (0,0), (1,0), (1,1), (0,1); the points between two corners spaced by arc length.
-Eigen::MatrixXd square_boundary(const DiskMesh& disk, const std::array<int, 4>& corners);
+// A side marked in `bow` becomes a parabola bulging outward by a quarter of its length, so
+// that no three of its points are collinear (the domain stays convex), and the whole is fitted
+// back into [0,1]^2.
+Eigen::MatrixXd square_boundary(const DiskMesh& disk, const std::array<int, 4>& corners,
+                                const std::array<bool, 4>& bow = {});
 
 }  // namespace lowstretch

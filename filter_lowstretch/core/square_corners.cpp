@@ -47,6 +47,15 @@ int collapsed_chords(const std::vector<Arc>& arcs, const std::array<int, 4>& cor
   return collapsed;
 }
 
+// The side (0..3) whose loop positions [corner k, corner k+1] hold `position`.
+int side_of(int position, const std::array<int, 4>& corners, int n) {
+  for (int k = 0; k < 4; ++k) {
+    const int length = (corners[size_t((k + 1) % 4)] - corners[size_t(k)] + n) % n;
+    if ((position - corners[size_t(k)] + n) % n < length) return k;
+  }
+  return 0;
+}
+
 }  // namespace
 
 SquareCorners choose_square_corners(const DiskMesh& disk) {
@@ -123,8 +132,10 @@ SquareCorners choose_square_corners(const DiskMesh& disk) {
       }
     }
   }
-  if (best_cost == inf) {  // more separate ears than corners: keep the quarter choice, report it
+  if (best_cost == inf) {  // more separate ears than corners: keep the quarter choice, bow sides
     result.collapsed_chords = collapsed_chords(arcs, result.corners, n);
+    for (const Arc& a : arcs)
+      if (!holds_a_corner(a, result.corners, n)) result.bow_side[size_t(side_of(a.first, result.corners, n))] = true;
     return result;
   }
   std::sort(best.begin(), best.end());

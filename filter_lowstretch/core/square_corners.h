@@ -8,9 +8,11 @@ namespace lowstretch {
 
 struct SquareCorners {
   std::array<int, 4> corners{};  // increasing positions in disk.boundary
-  // Interior edges whose two boundary endpoints still end up on one side (each collapses the
-  // triangles between it and the side): 0 unless no choice of corners avoids it.
+  // Interior edges whose two boundary endpoints still end up on one side (each would collapse
+  // the triangles between it and the side): 0 unless no choice of corners avoids it. The sides
+  // that hold them are marked in bow_side: square_boundary bows them outward.
   int collapsed_chords = 0;
+  std::array<bool, 4> bow_side{};
   bool moved = false;            // corners differ from the quarter-arc-length choice
 };
 

@@ -1,5 +1,7 @@
 #include "mesh_io.h"
 
+#include "obj_reader.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -9,7 +11,6 @@
 
 #include <wrap/io_trimesh/export_obj.h>
 #include <wrap/io_trimesh/export_ply.h>
-#include <wrap/io_trimesh/import_obj.h>
 #include <wrap/io_trimesh/import_off.h>
 #include <wrap/io_trimesh/import_ply.h>
 
@@ -90,19 +91,11 @@ bool check_ply_header(const std::string& path, long long size, std::string& erro
   return counts_fit(vertices, faces, size, error);
 }
 
-// OBJ reports some harmless conditions (a missing .mtl) as codes; for OFF and PLY any code is fatal.
-template <class Importer>
-bool is_critical(int code) { return code != 0; }
-template <>
-bool is_critical<vcg::tri::io::ImporterOBJ<ToolMesh>>(int code) {
-  return vcg::tri::io::ImporterOBJ<ToolMesh>::ErrorCritical(code);
-}
-
 template <class Importer>
 bool run_importer(ToolMesh& mesh, const std::string& path, std::string& error) {
   int mask = 0;
   const int code = Importer::Open(mesh, path.c_str(), mask);
-  if (is_critical<Importer>(code)) {
+  if (code != 0) {
     error = Importer::ErrorMsg(code);
     return false;
   }
@@ -123,7 +116,7 @@ bool read_mesh(const std::string& path, ToolMesh& mesh, std::string& error) {
     } else if (ext == "ply") {
       ok = check_ply_header(path, size, error) && run_importer<vcg::tri::io::ImporterPLY<ToolMesh>>(mesh, path, error);
     } else if (ext == "obj") {
-      ok = run_importer<vcg::tri::io::ImporterOBJ<ToolMesh>>(mesh, path, error);
+      ok = read_obj(path, mesh, error);
     } else {
       error = "unknown file type '." + ext + "': use OFF, OBJ or PLY";
     }

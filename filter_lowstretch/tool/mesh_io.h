@@ -7,7 +7,7 @@
 
 namespace lowstretch {
 
-// OFF, OBJ or PLY (ASCII or binary), by extension. Returns false with a one-line reason.
+// OFF, PLY (ASCII or binary; vcglib) or OBJ (obj_reader.h), by extension. Returns false with a one-line reason.
 bool read_mesh(const std::string& path, ToolMesh& mesh, std::string& error);
 
 // OBJ (per-corner vt and an .mtl naming `texture`) or PLY (wedge texcoords, per-vertex and
