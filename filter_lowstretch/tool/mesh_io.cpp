@@ -46,7 +46,8 @@ bool counts_fit(long long vertices, long long faces, long long size, std::string
 bool check_off_header(const std::string& path, long long size, std::string& error) {
   std::ifstream in(path);
   std::string word;
-  if (!(in >> word) || word.find("OFF") == std::string::npos) {
+  while (in >> word && word[0] == '#') std::getline(in, word);  // comments may come first
+  if (!in || word.find("OFF") == std::string::npos) {
     error = "not an OFF file (no OFF header)";
     return false;
   }

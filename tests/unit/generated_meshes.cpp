@@ -1,0 +1,102 @@
+#include "generated_meshes.h"
+
+#include <cmath>
+#include <vector>
+
+namespace testmesh {
+
+namespace {
+const double kPi = 3.14159265358979323846;
+Mesh from_lists(const std::vector<Eigen::RowVector3d>& v, const std::vector<Eigen::RowVector3i>& f) {
+  Mesh m;
+  m.V.resize(Eigen::Index(v.size()), 3);
+  m.F.resize(Eigen::Index(f.size()), 3);
+  for (size_t i = 0; i < v.size(); ++i) m.V.row(Eigen::Index(i)) = v[i];
+  for (size_t i = 0; i < f.size(); ++i) m.F.row(Eigen::Index(i)) = f[i];
+  return m;
+}
+}  // namespace
+
+Mesh grid(int n, const std::function<double(double, double)>& height) {
+  std::vector<Eigen::RowVector3d> v;
+  std::vector<Eigen::RowVector3i> f;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const double x = double(i) / n, y = double(j) / n;
+      v.emplace_back(x, y, height ? height(x, y) : 0.0);
+    }
+  auto id = [n](int i, int j) { return j * (n + 1) + i; };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      if ((i + j) % 2 == 0) {
+        f.emplace_back(id(i, j), id(i + 1, j), id(i + 1, j + 1));
+        f.emplace_back(id(i, j), id(i + 1, j + 1), id(i, j + 1));
+      } else {
+        f.emplace_back(id(i, j), id(i + 1, j), id(i, j + 1));
+        f.emplace_back(id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+      }
+    }
+  return from_lists(v, f);
+}
+
+Mesh hemisphere(int rings, int sectors) {
+  std::vector<Eigen::RowVector3d> v{{0, 0, 1}};
+  std::vector<Eigen::RowVector3i> f;
+  for (int r = 1; r <= rings; ++r) {
+    const double polar = 0.5 * kPi * r / rings;
+    for (int s = 0; s < sectors; ++s) {
+      const double a = 2 * kPi * s / sectors;
+      v.emplace_back(std::sin(polar) * std::cos(a), std::sin(polar) * std::sin(a), std::cos(polar));
+    }
+  }
+  auto id = [sectors](int r, int s) { return 1 + (r - 1) * sectors + (s % sectors); };
+  for (int s = 0; s < sectors; ++s) f.emplace_back(0, id(1, s), id(1, s + 1));
+  for (int r = 1; r < rings; ++r)
+    for (int s = 0; s < sectors; ++s) {
+      f.emplace_back(id(r, s), id(r + 1, s), id(r + 1, s + 1));
+      f.emplace_back(id(r, s), id(r + 1, s + 1), id(r, s + 1));
+    }
+  return from_lists(v, f);
+}
+
+Mesh octahedron() {
+  return from_lists({{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}},
+                    {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}});
+}
+
+Mesh two_grids(int n) {
+  const Mesh a = grid(n);
+  Mesh m;
+  m.V.resize(2 * a.V.rows(), 3);
+  m.F.resize(2 * a.F.rows(), 3);
+  m.V << a.V, (a.V.rowwise() + Eigen::RowVector3d(2, 0, 0));
+  m.F << a.F, (a.F.array() + int(a.V.rows())).matrix();
+  return m;
+}
+
+Mesh torus(int rings, int sectors) {
+  std::vector<Eigen::RowVector3d> v;
+  std::vector<Eigen::RowVector3i> f;
+  for (int r = 0; r < rings; ++r)
+    for (int s = 0; s < sectors; ++s) {
+      const double a = 2 * kPi * r / rings, b = 2 * kPi * s / sectors;
+      v.emplace_back((2 + std::cos(b)) * std::cos(a), (2 + std::cos(b)) * std::sin(a), std::sin(b));
+    }
+  auto id = [&](int r, int s) { return (r % rings) * sectors + (s % sectors); };
+  for (int r = 0; r < rings; ++r)
+    for (int s = 0; s < sectors; ++s) {
+      f.emplace_back(id(r, s), id(r + 1, s), id(r + 1, s + 1));
+      f.emplace_back(id(r, s), id(r + 1, s + 1), id(r, s + 1));
+    }
+  return from_lists(v, f);
+}
+
+Mesh without_face(const Mesh& mesh, int face) {
+  Mesh m = mesh;
+  m.F.resize(mesh.F.rows() - 1, 3);
+  for (Eigen::Index f = 0, g = 0; f < mesh.F.rows(); ++f)
+    if (f != face) m.F.row(g++) = mesh.F.row(f);
+  return m;
+}
+
+}  // namespace testmesh

@@ -1,0 +1,26 @@
+// Small meshes made in code, so that the tests need no files.
+#pragma once
+#include <Eigen/Core>
+#include <functional>
+
+namespace testmesh {
+
+struct Mesh {
+  Eigen::MatrixXd V;
+  Eigen::MatrixXi F;
+};
+
+// An n x n grid over [0,1]^2, counter-clockwise, z = height(x, y); diagonals alternate.
+Mesh grid(int n, const std::function<double(double, double)>& height = nullptr);
+// The upper hemisphere of the unit sphere as a disk (rings x sectors, apex on top).
+Mesh hemisphere(int rings, int sectors);
+// A closed octahedron.
+Mesh octahedron();
+// Two copies of grid(n) side by side: two components.
+Mesh two_grids(int n);
+// A torus (closed, genus 1) of rings x sectors quads split into triangles.
+Mesh torus(int rings, int sectors);
+// Removes face `face` from the mesh (makes a hole or opens a closed mesh).
+Mesh without_face(const Mesh& mesh, int face);
+
+}  // namespace testmesh

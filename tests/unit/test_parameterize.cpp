@@ -1,0 +1,172 @@
+// The iteration: no flips on convex boundaries, stretch falls, stop rule, options, bookkeeping.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/parameterize.h"
+#include "generated_meshes.h"
+
+using namespace lowstretch;
+
+namespace {
+
+// A tall cap (a hemisphere stretched along z and x): Floater's map squeezes its top, as it does
+// on the paper's heads. (On nearly flat grids U0 is already good and U1 can overshoot.)
+testmesh::Mesh tall_cap() {
+  testmesh::Mesh m = testmesh::hemisphere(16, 40);
+  m.V.col(2) *= 2.5;
+  m.V.col(0) *= 1.5;
+  return m;
+}
+
+void expect_no_bad_triangles(const Result& r) {
+  for (const PassMetrics& p : r.passes) {
+    EXPECT_EQ(p.flipped, 0) << "pass " << p.pass;
+    EXPECT_EQ(p.degenerate, 0) << "pass " << p.pass;
+  }
+}
+
+}  // namespace
+
+TEST(Parameterize, FlatDiskWithNaturalBoundaryHasStretchOne) {
+  const testmesh::Mesh m = testmesh::grid(10, nullptr);
+  Options o;
+  o.boundary = BoundaryShape::Natural;
+  const Result r = parameterize(m.V, m.F, o);
+  ASSERT_FALSE(r.error) << message(r.error);
+  for (const PassMetrics& p : r.passes) {
+    EXPECT_NEAR(p.l2_stretch, 1.0, 1e-9);
+    EXPECT_NEAR(p.linf_stretch, 1.0, 1e-9);
+    EXPECT_NEAR(p.angle_distortion, 0.0, 1e-9);
+  }
+  // The map is a similarity: UV differences are a fixed multiple of the 3D ones.
+  const double scale = (r.uv.row(1) - r.uv.row(0)).norm() / (m.V.row(1) - m.V.row(0)).norm();
+  for (Eigen::Index i = 0; i < m.V.rows(); ++i)
+    EXPECT_NEAR((r.uv.row(i) - r.uv.row(0)).norm(), scale * (m.V.row(i) - m.V.row(0)).norm(), 1e-9);
+}
+
+TEST(Parameterize, ConvexBoundariesGiveNoFlipsAndLowerStretch) {
+  for (const testmesh::Mesh& m : {testmesh::hemisphere(16, 32), tall_cap()})
+    for (BoundaryShape shape : {BoundaryShape::Square, BoundaryShape::Circle})
+      for (InitialWeights w : {InitialWeights::Floater, InitialWeights::MeanValue}) {
+        SCOPED_TRACE(std::string(to_string(shape)) + " " + to_string(w));
+        Options o;
+        o.boundary = shape;
+        o.weights = w;
+        const Result r = parameterize(m.V, m.F, o);
+        ASSERT_FALSE(r.error) << message(r.error);
+        expect_no_bad_triangles(r);
+        ASSERT_GE(r.passes.size(), 2u);
+        const double best = r.passes[size_t(r.chosen_pass)].l2_stretch;
+        EXPECT_LT(best, r.passes[0].l2_stretch);
+        EXPECT_LE(best, r.passes[1].l2_stretch);
+        EXPECT_GE(r.uv.minCoeff(), -1e-12);
+        EXPECT_LE(r.uv.maxCoeff(), 1 + 1e-12);
+      }
+}
+
+TEST(Parameterize, StopRuleReturnsTheBestPassAndStopsWhenStretchRises) {
+  const testmesh::Mesh m = tall_cap();
+  const Result r = parameterize(m.V, m.F);
+  ASSERT_FALSE(r.error);
+  const auto best = std::min_element(r.passes.begin(), r.passes.end(),
+                                     [](const PassMetrics& a, const PassMetrics& b) { return a.l2_stretch < b.l2_stretch; });
+  EXPECT_EQ(best->pass, r.chosen_pass);
+  if (r.stop_reason == StopReason::StretchRose) {
+    EXPECT_EQ(int(r.passes.size()), r.chosen_pass + 2);
+    EXPECT_GE(r.passes.back().l2_stretch, r.passes[size_t(r.chosen_pass)].l2_stretch);
+  } else {
+    EXPECT_EQ(int(r.passes.size()), 11);
+  }
+}
+
+TEST(Parameterize, MaxPassesZeroGivesU0AndOneGivesU1) {
+  const testmesh::Mesh m = testmesh::hemisphere(8, 16);
+  Options o;
+  o.max_passes = 0;
+  Result r = parameterize(m.V, m.F, o);
+  ASSERT_FALSE(r.error);
+  EXPECT_EQ(r.passes.size(), 1u);
+  EXPECT_EQ(r.chosen_pass, 0);
+  o.max_passes = 1;
+  r = parameterize(m.V, m.F, o);
+  EXPECT_EQ(r.passes.size(), 2u);
+  EXPECT_EQ(r.chosen_pass, 1);
+  o.max_passes = 6;
+  o.stop_when_stretch_rises = false;
+  r = parameterize(m.V, m.F, o);
+  EXPECT_EQ(r.passes.size(), 7u);
+}
+
+TEST(Parameterize, SmallerExponentIsGentler) {
+  const testmesh::Mesh m = testmesh::hemisphere(12, 24);
+  Options o;
+  o.max_passes = 1;
+  const double full = parameterize(m.V, m.F, o).passes[1].l2_stretch;
+  o.exponent = 0.25;
+  const Result gentle = parameterize(m.V, m.F, o);
+  // U1 with a small exponent moves less far from U0 than with exponent 1.
+  EXPECT_GT(gentle.passes[1].l2_stretch, full);
+  EXPECT_LT(gentle.passes[1].l2_stretch, gentle.passes[0].l2_stretch);
+}
+
+TEST(Parameterize, UnreferencedVerticesKeepTheirRowsAndChangeNothing) {
+  const testmesh::Mesh m = testmesh::hemisphere(8, 16);
+  testmesh::Mesh padded;
+  padded.V.resize(m.V.rows() + 2, 3);
+  padded.V.row(0) << std::nan(""), 0, 0;  // unreferenced, first
+  padded.V.middleRows(1, m.V.rows()) = m.V;
+  padded.V.bottomRows(1) << 5, 5, 5;       // unreferenced, last
+  padded.F = (m.F.array() + 1).matrix();
+  const Result a = parameterize(m.V, m.F), b = parameterize(padded.V, padded.F);
+  ASSERT_FALSE(b.error) << message(b.error);
+  EXPECT_EQ(b.uv.rows(), padded.V.rows());
+  EXPECT_EQ(b.uv.row(0), Eigen::RowVector2d::Zero());
+  EXPECT_LT((b.uv.middleRows(1, m.V.rows()) - a.uv).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_EQ(a.chosen_pass, b.chosen_pass);
+}
+
+TEST(Parameterize, NaturalBoundaryOnACurvedDiskReportsItsFlips) {
+  const testmesh::Mesh m = testmesh::hemisphere(12, 24);
+  Options o;
+  o.boundary = BoundaryShape::Natural;
+  const Result r = parameterize(m.V, m.F, o);
+  ASSERT_FALSE(r.error);
+  const PassMetrics& kept = r.passes[size_t(r.chosen_pass)];
+  EXPECT_EQ(kept.flipped, 0);
+  EXPECT_LT(kept.l2_stretch, r.passes[0].l2_stretch);
+}
+
+TEST(Parameterize, ProgressIsReportedAndCanCancel) {
+  const testmesh::Mesh m = testmesh::hemisphere(8, 16);
+  Options o;
+  double last = -1;
+  bool monotone = true;
+  o.progress = [&](double f, const char*) {
+    monotone = monotone && f >= last;
+    last = f;
+    return true;
+  };
+  EXPECT_FALSE(parameterize(m.V, m.F, o).error);
+  EXPECT_TRUE(monotone);
+  EXPECT_DOUBLE_EQ(last, 1.0);
+  o.progress = [](double f, const char*) { return f < 0.1; };  // cancel in pass 1
+  EXPECT_EQ(parameterize(m.V, m.F, o).error.code, ErrorCode::Cancelled);
+}
+
+TEST(Parameterize, ZeroAreaTrianglesInsideAreHandled) {
+  // Collapse one interior edge's triangles to zero area by moving a vertex onto its neighbour's line.
+  testmesh::Mesh m = testmesh::grid(6, [](double x, double y) { return 0.3 * x * y; });
+  m.V.row(8) = 0.5 * (m.V.row(7) + m.V.row(9));  // vertex 8 on the segment 7-9
+  m.V.row(15) = m.V.row(16);                       // vertices 15 and 16 coincide
+  for (BoundaryShape shape : {BoundaryShape::Square, BoundaryShape::Circle}) {
+    Options o;
+    o.boundary = shape;
+    const Result r = parameterize(m.V, m.F, o);
+    ASSERT_FALSE(r.error) << message(r.error);
+    EXPECT_EQ(r.passes[size_t(r.chosen_pass)].flipped, 0);
+    EXPECT_EQ(r.passes[size_t(r.chosen_pass)].degenerate, 0);
+    EXPECT_TRUE(r.uv.allFinite());
+  }
+}

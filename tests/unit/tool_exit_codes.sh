@@ -1,0 +1,92 @@
+#!/usr/bin/env bash
+# The lowstretch tool: exit codes, one line on stderr, and no output file unless it succeeded.
+# Usage: tool_exit_codes.sh path/to/lowstretch [shared-meshes-folder]
+set -u
+tool=$1
+shared=${2:-}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0 failed=0
+check() {  # check NAME EXPECTED-EXIT ARGS...
+  local name=$1 want=$2
+  shift 2
+  rm -f "$work/out.ply" "$work/out.obj" "$work/out.obj.mtl" "$work/uv.svg"
+  "$tool" "$@" >"$work/stdout" 2>"$work/stderr"
+  local got=$?
+  local ok=1
+  [ "$got" = "$want" ] || { echo "FAIL $name: exit $got, wanted $want"; ok=0; }
+  if [ "$want" != 0 ]; then
+    [ "$(wc -l <"$work/stderr")" -ge 1 ] || { echo "FAIL $name: nothing on stderr"; ok=0; }
+    ls "$work"/out.* "$work/uv.svg" >/dev/null 2>&1 && { echo "FAIL $name: an output file was created"; ok=0; }
+  fi
+  if [ $ok = 1 ]; then passed=$((passed + 1)); echo "ok   $name"; else failed=$((failed + 1)); cat "$work/stderr"; fi
+}
+
+# A small disk: a 3x3 grid as OFF.
+cat >"$work/disk.off" <<'MESH'
+OFF
+9 8 0
+0 0 0
+1 0 0
+2 0 0.5
+0 1 0
+1 1 1
+2 1 0
+0 2 0
+1 2 0.3
+2 2 0
+3 0 1 4
+3 0 4 3
+3 1 2 5
+3 1 5 4
+3 3 4 7
+3 3 7 6
+3 4 5 8
+3 4 8 7
+MESH
+# Two separate triangles: two components.
+cat >"$work/two.off" <<'MESH'
+OFF
+6 2 0
+0 0 0
+1 0 0
+0 1 0
+5 0 0
+6 0 0
+5 1 0
+3 0 1 2
+3 3 4 5
+MESH
+printf 'OFF\n99999999 5 0\n0 0 0\n' >"$work/huge.off"
+: >"$work/empty.off"
+printf 'v 0 0 0\nv 1 0 0\nf 1 2 7\n' >"$work/badindex.obj"
+
+check "good disk to PLY" 0 "$work/disk.off" -o "$work/out.ply" --svg "$work/uv.svg"
+[ -s "$work/out.ply" ] && [ -s "$work/uv.svg" ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL good disk: no PLY or SVG"; }
+check "good disk to OBJ" 0 "$work/disk.off" -o "$work/out.obj"
+grep -q '^vt ' "$work/out.obj" && grep -q 'map_Kd' "$work/out.obj.mtl" && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL OBJ: no vt or no texture in the .mtl"; }
+check "json is one object" 0 "$work/disk.off" --json --boundary circle --max-passes 2
+python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert {"vertices","faces","boundary","weights","exponent","passes","chosen_pass","seconds_total"} <= d.keys(); assert all({"pass","l2_stretch","linf_stretch","edge_distortion","angle_distortion","area_distortion","flipped","degenerate","seconds"} <= p.keys() for p in d["passes"])' "$work/stdout" \
+  && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL json keys"; }
+check "two components rejected" 3 "$work/two.off" -o "$work/out.ply"
+grep -q "2 connected components" "$work/stderr" && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL message"; }
+check "huge header refused" 2 "$work/huge.off" -o "$work/out.ply"
+check "empty file refused" 2 "$work/empty.off" -o "$work/out.ply"
+check "bad OBJ index refused" 2 "$work/badindex.obj" -o "$work/out.ply"
+check "missing file" 2 "$work/nothing.off" -o "$work/out.ply"
+check "bad option" 1 "$work/disk.off" --boundary triangle -o "$work/out.ply"
+check "bad exponent" 3 "$work/disk.off" --exponent 2 -o "$work/out.ply"
+check "unwritable output" 4 "$work/disk.off" -o "$work/no/such/folder/out.ply"
+# An existing output stays untouched when the input is bad.
+echo keep >"$work/keep.ply"
+"$tool" "$work/two.off" -o "$work/keep.ply" 2>/dev/null
+[ "$(cat "$work/keep.ply")" = keep ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL existing output changed"; }
+
+if [ -d "$shared/bad" ]; then
+  for f in "$shared"/bad/* "$shared"/parse_errors/*; do
+    case $f in */parse_errors/*) want=2 ;; *) want=3 ;; esac
+    check "$(basename "$f")" $want "$f" -o "$work/out.ply"
+  done
+fi
+echo "tool_exit_codes: $passed passed, $failed failed"
+[ $failed = 0 ]
