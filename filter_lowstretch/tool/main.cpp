@@ -172,7 +172,7 @@ int main(int argc, char** argv) {
   }
   if (!args.svg.empty()) {
     std::ostringstream title;
-    title << args.input << ": " << to_string(args.options.boundary) << ", pass " << result.chosen_pass << ", L2 stretch "
+    title << args.input.substr(args.input.find_last_of('/') + 1) << ": " << to_string(args.options.boundary) << ", pass " << result.chosen_pass << ", L2 stretch "
           << result.passes[size_t(result.chosen_pass)].l2_stretch;
     if (!write_uv_svg(args.svg, result.uv, F, result.face_stretch, title.str(), error)) {
       std::cerr << "lowstretch: " << error << "\n";

@@ -6,7 +6,8 @@
 namespace lowstretch {
 
 // UV: #V x 2 in [0,1]^2; F: #F x 3; face_stretch: #F (1 = no stretch). Colours run on a log
-// scale from 1 (blue) to the 99th percentile (red); flipped faces are black.
+// scale: blue below 1 (the map enlarges), white at 1, red above (the map shrinks, texture is
+// stretched); flipped faces are black.
 bool write_uv_svg(const std::string& path, const Eigen::MatrixXd& UV, const Eigen::MatrixXi& F,
                   const Eigen::VectorXd& face_stretch, const std::string& title, std::string& error);
 
