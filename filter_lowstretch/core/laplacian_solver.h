@@ -20,6 +20,9 @@ class LaplacianSolver {
   // every vertex of the disk, or false if the factorization fails.
   bool solve(const std::vector<double>& weights, const Eigen::MatrixXd& boundary_uv, Eigen::MatrixXd& uv);
 
+  // Seconds the last solve() spent filling the matrix, factorizing and solving.
+  double seconds_assembly = 0, seconds_factorization = 0, seconds_solve = 0;
+
  private:
   const DiskMesh& disk_;
   std::vector<int> unknown_;             // compact vertex -> row of the system, -1 on the boundary

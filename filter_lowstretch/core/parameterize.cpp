@@ -96,6 +96,7 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
     const Clock::time_point pass_start = Clock::now();
     if (!report(0.05 + 0.9 * pass / (options.max_passes + 1.0), pass == 0 ? "initial parameterization" : "stretch pass"))
       return result.error = {ErrorCode::Cancelled, 0, ""}, result;
+    Clock::time_point phase = Clock::now();
     if (pass > 0) {
       // w_ij <- w_ij / sigma_j^eta with sigma from the previous pass, then each row rescaled to
       // sum 1 (a row's scale does not change its equation; this keeps the values near 1).
@@ -111,11 +112,17 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
           for (int s = disk.ring_start[size_t(i)]; s < disk.ring_start[size_t(i) + 1]; ++s) weights[size_t(s)] /= sum;
       }
     }
+    const double reweighting = seconds_since(phase);
     if (!solver.solve(weights, boundary_uv, uv))
       return result.error = {ErrorCode::SolverFailed, pass, "singular or non-finite system"}, result;
+    phase = Clock::now();
     stretch = face_stretch(disk.V, disk.F, uv);
     PassMetrics metrics = measure(disk, uv, stretch);
     metrics.pass = pass;
+    metrics.seconds_metrics = seconds_since(phase);
+    metrics.seconds_assembly = reweighting + solver.seconds_assembly;
+    metrics.seconds_factorization = solver.seconds_factorization;
+    metrics.seconds_solve = solver.seconds_solve;
     metrics.seconds = seconds_since(pass_start);
     result.passes.push_back(metrics);
 

@@ -34,7 +34,11 @@ struct PassMetrics {
   double edge_distortion = 0, angle_distortion = 0, area_distortion = 0;
   int flipped = 0;     // parameter triangles with negative area
   int degenerate = 0;  // parameter triangles with zero area
-  double seconds = 0;  // wall time of this pass (weights, solve, metrics)
+  double seconds = 0;  // wall time of this pass (weights, solve, metrics), split into:
+  double seconds_assembly = 0;       // reweighting and filling the matrix
+  double seconds_factorization = 0;  // numeric factorization (or preconditioner setup)
+  double seconds_solve = 0;          // solving for u and v
+  double seconds_metrics = 0;        // stretch and distortion metrics
 };
 
 struct Result {

@@ -109,7 +109,9 @@ void print_json(const Arguments& a, const Eigen::MatrixXd& V, const Eigen::Matri
     o << (i ? ",\n  " : "\n  ") << "{\"pass\": " << p.pass << ", \"l2_stretch\": " << number(p.l2_stretch)
       << ", \"linf_stretch\": " << number(p.linf_stretch) << ", \"edge_distortion\": " << number(p.edge_distortion)
       << ", \"angle_distortion\": " << number(p.angle_distortion) << ", \"area_distortion\": " << number(p.area_distortion)
-      << ", \"flipped\": " << p.flipped << ", \"degenerate\": " << p.degenerate << ", \"seconds\": " << number(p.seconds) << "}";
+      << ", \"flipped\": " << p.flipped << ", \"degenerate\": " << p.degenerate << ", \"seconds\": " << number(p.seconds)
+      << ", \"seconds_assembly\": " << number(p.seconds_assembly) << ", \"seconds_factorization\": " << number(p.seconds_factorization)
+      << ", \"seconds_solve\": " << number(p.seconds_solve) << ", \"seconds_metrics\": " << number(p.seconds_metrics) << "}";
   }
   o << "],\n \"chosen_pass\": " << r.chosen_pass << ", \"stop_reason\": " << quoted(to_string(r.stop_reason))
     << ", \"seconds_total\": " << number(r.seconds_total) << ", \"notes\": [";
