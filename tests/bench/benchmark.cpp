@@ -1,0 +1,221 @@
+// Speed benchmark (not a test): for each mesh, our passes with the time of each phase, a CHOLMOD
+// Cholesky factorization of the same sparsity pattern as a yardstick, and CGAL's iterative
+// authalic and mean value parameterizers, all measured in one run and reported as medians.
+//
+// usage: lowstretch_benchmark [--runs N] [--cgal-max-vertices N] [--passes N] MESH...
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/Iterative_authalic_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Mean_value_coordinates_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Square_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
+#include <Eigen/CholmodSupport>
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "core/disk_mesh.h"
+#include "core/parameterize.h"
+#include "core/stretch.h"
+#include "mesh_io.h"
+#include "vcg/mesh_arrays.h"
+
+using namespace lowstretch;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0 : v[v.size() / 2];
+}
+double peak_rss_mb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_maxrss) / 1024.0;
+}
+
+// CHOLMOD supernodal Cholesky of an SPD matrix with the pattern of our system (interior rows,
+// interior neighbours): graph Laplacian plus the boundary coupling on the diagonal.
+double cholmod_factorization_seconds(const DiskMesh& disk, int runs, double& analyze_seconds) {
+  const int n = int(disk.V.rows());
+  std::vector<int> row(size_t(n), -1);
+  int rows = 0;
+  for (int i = 0; i < n; ++i)
+    if (!disk.is_boundary[size_t(i)]) row[size_t(i)] = rows++;
+  std::vector<Eigen::Triplet<double>> t;
+  for (int i = 0; i < n; ++i) {
+    if (row[size_t(i)] < 0) continue;
+    const int b = disk.ring_start[size_t(i)], e = disk.ring_start[size_t(i) + 1];
+    t.emplace_back(row[size_t(i)], row[size_t(i)], double(e - b) + 1e-3);
+    for (int s = b; s < e; ++s)
+      if (row[size_t(disk.ring[size_t(s)])] >= 0) t.emplace_back(row[size_t(i)], row[size_t(disk.ring[size_t(s)])], -1.0);
+  }
+  Eigen::SparseMatrix<double> A(rows, rows);
+  A.setFromTriplets(t.begin(), t.end());
+  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> llt;
+  Clock::time_point start = Clock::now();
+  llt.analyzePattern(A);
+  analyze_seconds = seconds_since(start);
+  std::vector<double> times;
+  for (int r = 0; r < runs; ++r) {
+    start = Clock::now();
+    llt.factorize(A);
+    times.push_back(seconds_since(start));
+  }
+  return median(times);
+}
+
+using Kernel = CGAL::Simple_cartesian<double>;
+using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using VertexIndex = SurfaceMesh::Vertex_index;
+namespace SMP = CGAL::Surface_mesh_parameterization;
+
+struct CgalRun {
+  double seconds = 0;
+  PassMetrics metrics;
+  bool ok = false;
+};
+
+template <class Parameterize>
+CgalRun run_cgal(const DiskMesh& disk, Parameterize parameterize_with_cgal) {
+  SurfaceMesh sm;
+  std::vector<VertexIndex> vertex;
+  for (Eigen::Index i = 0; i < disk.V.rows(); ++i)
+    vertex.push_back(sm.add_vertex(Kernel::Point_3(disk.V(i, 0), disk.V(i, 1), disk.V(i, 2))));
+  for (Eigen::Index f = 0; f < disk.F.rows(); ++f)
+    sm.add_face(vertex[size_t(disk.F(f, 0))], vertex[size_t(disk.F(f, 1))], vertex[size_t(disk.F(f, 2))]);
+  auto uv = sm.add_property_map<VertexIndex, Kernel::Point_2>("v:uv").first;
+  const auto border = CGAL::Polygon_mesh_processing::longest_border(sm).first;
+  CgalRun run;
+  std::fflush(stdout);
+  const int saved_stdout = dup(1), null = open("/dev/null", O_WRONLY);  // CGAL prints every iteration
+  dup2(null, 1);
+  const Clock::time_point start = Clock::now();
+  run.ok = parameterize_with_cgal(sm, border, uv) == SMP::OK;
+  run.seconds = seconds_since(start);
+  std::fflush(stdout);
+  dup2(saved_stdout, 1);
+  close(null);
+  close(saved_stdout);
+  Eigen::MatrixXd UV(disk.V.rows(), 2);
+  for (Eigen::Index i = 0; i < disk.V.rows(); ++i) UV.row(i) << uv[vertex[size_t(i)]].x(), uv[vertex[size_t(i)]].y();
+  // CGAL may run the border the other way round: flips count against the majority orientation.
+  if (face_stretch(disk.V, disk.F, UV).area_uv.sum() < 0) UV.col(0) = (1 - UV.col(0).array()).matrix();
+  run.metrics = measure(disk, UV, face_stretch(disk.V, disk.F, UV));
+  return run;
+}
+
+using Border = SMP::Square_border_arc_length_parameterizer_3<SurfaceMesh>;
+
+void report_cgal(const char* name, const CgalRun& r) {
+  std::printf("  %-34s %8.3f s  L2 %8.4f  flips %d  zero-area %d%s\n", name, r.seconds, r.metrics.l2_stretch,
+              r.metrics.flipped, r.metrics.degenerate, r.ok ? "" : "  (CGAL reported an error)");
+}
+
+void benchmark_mesh(const std::string& path, int runs, int passes, long cgal_max_vertices) {
+  ToolMesh mesh;
+  std::string error;
+  if (!read_mesh(path, mesh, error)) { std::printf("%s: %s\n", path.c_str(), error.c_str()); return; }
+  Eigen::MatrixXd V;
+  Eigen::MatrixXi F;
+  mesh_to_arrays(mesh, V, F);
+  DiskMesh disk;
+  if (Error e = make_disk_mesh(V, F, disk)) { std::printf("%s: %s\n", path.c_str(), message(e).c_str()); return; }
+  long interior = 0;
+  for (char b : disk.is_boundary) interior += !b;
+  std::printf("%s: %ld vertices, %ld interior rows, %ld faces\n", path.c_str(), long(V.rows()), interior, long(F.rows()));
+
+  double analyze = 0;
+  const double cholmod = cholmod_factorization_seconds(disk, runs, analyze);
+  std::printf("  CHOLMOD supernodal LLT of the pattern: analyze %.3f s, factorize %.3f s (median of %d)\n", analyze, cholmod, runs);
+
+  for (bool forced : {false, true}) {
+    Options o;
+    o.max_passes = passes;
+    o.stop_when_stretch_rises = !forced;
+    std::vector<double> totals;
+    std::vector<std::vector<PassMetrics>> all;
+    Result r;
+    for (int k = 0; k < runs; ++k) {
+      r = parameterize(V, F, o);
+      if (r.error) { std::printf("  %s\n", message(r.error).c_str()); return; }
+      totals.push_back(r.seconds_total);
+      all.push_back(r.passes);
+    }
+    const double total = median(totals);
+    std::printf("  ours, max passes %d%s: %.3f s total (median of %d), %zu solves, kept pass %d, L2 %.4f, flips %d; %.2f x CHOLMOD\n",
+                passes, forced ? " forced" : " with the stop rule", total, runs, r.passes.size(), r.chosen_pass,
+                r.passes[size_t(r.chosen_pass)].l2_stretch, r.passes[size_t(r.chosen_pass)].flipped, total / cholmod);
+    if (forced) continue;
+    std::printf("    pass  assembly  factorize   solve  metrics    total   L2 stretch\n");
+    for (size_t p = 0; p < r.passes.size(); ++p) {
+      std::vector<double> a, f, s, m, t;
+      for (const auto& run : all)
+        if (p < run.size()) {
+          a.push_back(run[p].seconds_assembly);
+          f.push_back(run[p].seconds_factorization);
+          s.push_back(run[p].seconds_solve);
+          m.push_back(run[p].seconds_metrics);
+          t.push_back(run[p].seconds);
+        }
+      std::printf("    %4zu %9.3f %10.3f %7.3f %8.3f %8.3f %12.4f\n", p, median(a), median(f), median(s), median(m), median(t),
+                  r.passes[p].l2_stretch);
+    }
+  }
+
+  if (V.rows() > cgal_max_vertices) {
+    std::printf("  CGAL skipped above %ld vertices (it takes minutes)\n", cgal_max_vertices);
+  } else {
+    report_cgal("CGAL Mean_value_coordinates (square)", run_cgal(disk, [](SurfaceMesh& sm, auto border, auto uv) {
+                  return SMP::parameterize(sm, SMP::Mean_value_coordinates_parameterizer_3<SurfaceMesh, Border>(), border, uv);
+                }));
+    report_cgal("CGAL Iterative_authalic (square)", run_cgal(disk, [](SurfaceMesh& sm, auto border, auto uv) {
+                  SMP::Iterative_authalic_parameterizer_3<SurfaceMesh, Border> iterative;
+                  return iterative.parameterize(sm, border, uv, 15u);
+                }));
+  }
+  std::printf("  peak memory %.0f MB\n", peak_rss_mb());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int runs = 5, passes = 4;
+  long cgal_max_vertices = 50000;
+  std::vector<std::string> meshes;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--runs" && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
+    else if (a == "--passes" && i + 1 < argc) passes = std::max(0, std::atoi(argv[++i]));
+    else if (a == "--cgal-max-vertices" && i + 1 < argc) cgal_max_vertices = std::atol(argv[++i]);
+    else meshes.push_back(a);
+  }
+  if (meshes.empty()) {
+    std::fprintf(stderr, "usage: lowstretch_benchmark [--runs N] [--passes N] [--cgal-max-vertices N] MESH...\n");
+    return 1;
+  }
+  // One child process per mesh, so that the peak memory it reports is that mesh's alone.
+  for (const std::string& m : meshes) {
+    std::fflush(stdout);
+    const pid_t child = fork();
+    if (child == 0) {
+      benchmark_mesh(m, runs, passes, cgal_max_vertices);
+      std::fflush(stdout);
+      _exit(0);
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+  }
+  return 0;
+}
