@@ -63,6 +63,12 @@ Error boundary_positions(const DiskMesh& disk, BoundaryShape shape, Eigen::Matri
   return {};
 }
 
+Result failed(Error error) {
+  Result result;
+  result.error = std::move(error);
+  return result;
+}
+
 }  // namespace
 
 Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Options& options) {
@@ -71,14 +77,12 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
   auto report = [&](double fraction, const char* stage) {
     return !options.progress || options.progress(fraction, stage);
   };
-  if ((result.error = check_options(options))) return result;
-
+  if (Error e = check_options(options)) return failed(e);
   DiskMesh disk;
-  if ((result.error = make_disk_mesh(V, F, disk))) return result;
-  if (!report(0.02, "boundary")) return result.error = {ErrorCode::Cancelled, 0, ""}, result;
-
+  if (Error e = make_disk_mesh(V, F, disk)) return failed(e);
+  if (!report(0.02, "boundary")) return failed({ErrorCode::Cancelled, 0, ""});
   Eigen::MatrixXd boundary_uv;
-  if ((result.error = boundary_positions(disk, options.boundary, boundary_uv, result.notes))) return result;
+  if (Error e = boundary_positions(disk, options.boundary, boundary_uv, result.notes)) return failed(e);
 
   int fallbacks = 0;
   std::vector<double> weights = initial_weights(disk, options.weights, fallbacks);
@@ -95,7 +99,7 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
   for (int pass = 0; pass <= options.max_passes; ++pass) {
     const Clock::time_point pass_start = Clock::now();
     if (!report(0.05 + 0.9 * pass / (options.max_passes + 1.0), pass == 0 ? "initial parameterization" : "stretch pass"))
-      return result.error = {ErrorCode::Cancelled, 0, ""}, result;
+      return failed({ErrorCode::Cancelled, 0, ""});
     Clock::time_point phase = Clock::now();
     if (pass > 0) {
       // w_ij <- w_ij / sigma_j^eta with sigma from the previous pass, then each row rescaled to
@@ -114,7 +118,7 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
     }
     const double reweighting = seconds_since(phase);
     if (!solver.solve(weights, boundary_uv, uv))
-      return result.error = {ErrorCode::SolverFailed, pass, "singular or non-finite system"}, result;
+      return failed({ErrorCode::SolverFailed, pass, "singular or non-finite system"});
     phase = Clock::now();
     stretch = face_stretch(disk.V, disk.F, uv);
     PassMetrics metrics = measure(disk, uv, stretch);
