@@ -130,7 +130,8 @@ bool FilterLowStretchPlugin::applyFilter(QAction*, MeshDocument& md, const RichP
         "Initial weights must be 0 (Floater shape-preserving), 1 (Mean value) or 2 (Harmonic), got " +
         std::to_string(weights))));
   if (!(options.exponent > 0 && options.exponent <= 1))
-    return fail(lowstretch::message(invalidOption("Exponent must be in (0, 1], got " + std::to_string(options.exponent))));
+    return fail(lowstretch::message(
+        invalidOption("Exponent must be in (0, 1], got " + QString::number(options.exponent).toStdString())));
   if (options.max_passes < 0)
     return fail(lowstretch::message(invalidOption("Max passes must be 0 or more, got " + std::to_string(options.max_passes))));
   options.boundary = kBoundaryValues[boundary];

@@ -150,8 +150,10 @@ bool write_mesh(const std::string& path, ToolMesh& mesh, const std::string& text
   if (ext == "obj") {
     code = run_exporter<io::ExporterOBJ<ToolMesh>>(mesh, temporary, io::Mask::IOM_WEDGTEXCOORD);
   } else if (ext == "ply") {
+    // No per-vertex texcoords: vcglib 2020.09 writes them as doubles under a float header for a
+    // double mesh. The per-wedge texcoords carry the same values.
     code = run_exporter<io::ExporterPLY<ToolMesh>>(
-        mesh, temporary, io::Mask::IOM_WEDGTEXCOORD | io::Mask::IOM_VERTTEXCOORD | io::Mask::IOM_VERTQUALITY | io::Mask::IOM_FACEQUALITY);
+        mesh, temporary, io::Mask::IOM_WEDGTEXCOORD | io::Mask::IOM_VERTQUALITY | io::Mask::IOM_FACEQUALITY);
   } else {
     error = "unknown output type '." + ext + "': use .obj or .ply";
     return false;

@@ -10,7 +10,7 @@ namespace lowstretch {
 // OFF, PLY (ASCII or binary; vcglib) or OBJ (obj_reader.h), by extension. Returns false with a one-line reason.
 bool read_mesh(const std::string& path, ToolMesh& mesh, std::string& error);
 
-// OBJ (per-corner vt and an .mtl naming `texture`) or PLY (wedge texcoords, per-vertex and
+// OBJ (per-corner vt and an .mtl naming `texture`) or PLY (per-wedge texcoords, per-vertex and
 // per-face quality), by extension. Writes to a temporary file first, so a failure leaves no
 // output behind and never changes an existing file.
 bool write_mesh(const std::string& path, ToolMesh& mesh, const std::string& texture, std::string& error);

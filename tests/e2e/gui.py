@@ -1,0 +1,168 @@
+#!/usr/bin/env python3
+"""GUI check of the "Low-stretch parameterization" filter in MeshLab 2020.09 under Xvfb.
+
+  gui.py --prefix P --runner lowstretch_plugin_runner --mesh MESH.off --work DIR
+
+Starts an Xvfb server and the private prefix's meshlab on MESH, opens Filters > Texture with the
+keyboard, selects the filter, opens its dialog and presses Apply, then checks in MeshLab's log
+(which MeshLab also prints on stderr) that the filter ran and logged its metrics. Screenshots of
+every step are kept in DIR (lowstretch_gui.png is the final one); xdotool drives the GUI and
+ImageMagick's `import` takes the pictures.
+"""
+import argparse
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+FILTER = "Low-stretch parameterization"
+TEXTURE_CLASS = 0x2000  # MeshFilterInterface::Texture
+
+
+class Gui:
+    def __init__(self, work):
+        self.work = work
+        self.env = dict(os.environ, HOME=os.path.join(work, "home"), XDG_RUNTIME_DIR=os.path.join(work, "runtime"))
+        for key in ("HOME", "XDG_RUNTIME_DIR"):
+            os.makedirs(self.env[key], mode=0o700)
+        self.processes = []
+
+    def start_xvfb(self):
+        """Xvfb picks a free display itself and writes its number to a pipe (no race with other tests)."""
+        read_end, write_end = os.pipe()
+        xvfb = subprocess.Popen(["Xvfb", "-displayfd", str(write_end), "-screen", "0", "1600x1000x24", "-nolisten", "tcp"],
+                                pass_fds=[write_end], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        self.processes.append(xvfb)
+        os.close(write_end)
+        with os.fdopen(read_end) as pipe:
+            display = pipe.readline().strip()
+        if not display:
+            raise RuntimeError("Xvfb did not start")
+        self.env["DISPLAY"] = ":" + display
+
+    def start(self, command, log_name):
+        log = open(os.path.join(self.work, log_name), "w")
+        process = subprocess.Popen(command, env=self.env, cwd=self.work, stdout=log, stderr=subprocess.STDOUT)
+        self.processes.append(process)
+        return process
+
+    def run(self, *command):
+        return subprocess.run(command, env=self.env, capture_output=True, text=True, timeout=60).stdout.strip()
+
+    def window(self, name, timeout=30):
+        """Id of the visible window whose title matches the regular expression `name`."""
+        end = time.time() + timeout
+        while time.time() < end:
+            found = self.run("xdotool", "search", "--onlyvisible", "--name", name).split()
+            if found:
+                return found[0]
+            time.sleep(0.25)
+        return None
+
+    def key(self, *keys):
+        for key in keys:
+            self.run("xdotool", "key", key)
+            time.sleep(0.3)
+
+    def screenshot(self, name):
+        path = os.path.join(self.work, name)
+        self.run("import", "-window", "root", path)
+        print(f"screenshot {path}")
+        return path
+
+    def stop(self):
+        for process in reversed(self.processes):
+            if process.poll() is None:
+                process.terminate()
+                try:
+                    process.wait(timeout=10)
+                except subprocess.TimeoutExpired:
+                    process.kill()
+                    process.wait()
+
+
+def wait_for_text(path, texts, timeout):
+    """Waits until the file holds one of `texts`; returns that text or None."""
+    end = time.time() + timeout
+    while time.time() < end:
+        with open(path, errors="replace") as f:
+            content = f.read()
+        for text in texts:
+            if text in content:
+                return text
+        time.sleep(0.5)
+    return None
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--prefix", required=True)
+    parser.add_argument("--runner", required=True)
+    parser.add_argument("--mesh", required=True)
+    parser.add_argument("--work", required=True)
+    args = parser.parse_args()
+    shutil.rmtree(args.work, ignore_errors=True)
+    os.makedirs(args.work)
+    failed = []
+
+    def check(ok, what):
+        print(("ok:     " if ok else "FAILED: ") + what)
+        if not ok:
+            failed.append(what)
+        return ok
+
+    gui = Gui(args.work)
+    try:
+        gui.start_xvfb()
+        # Where MeshLab puts the filter in Filters > Texture: filters of that class, sorted by name.
+        plugins = os.path.join(args.prefix, "lib/x86_64-linux-gnu/meshlab/plugins")
+        listing = subprocess.run([args.runner, "--list-filters", plugins], env=gui.env, capture_output=True,
+                                 text=True, timeout=120).stdout.splitlines()
+        texture = sorted(name for cls, name in (line.split(" ", 1) for line in listing) if int(cls) & TEXTURE_CLASS)
+        if not check(FILTER in texture, f"the plugin's filter is in the Texture class ({len(texture)} filters there)"):
+            return 1
+        index = texture.index(FILTER)
+
+        log = os.path.join(args.work, "meshlab.log")
+        gui.start([os.path.join(args.prefix, "bin", "meshlab"), os.path.abspath(args.mesh)], "meshlab.log")
+        main_window = gui.window("^MeshLab 20")
+        if not check(main_window is not None and wait_for_text(log, ["All files opened"], 60) is not None,
+                     "meshlab starts and opens the mesh"):
+            return 1
+        gui.run("xdotool", "windowsize", main_window, "1120", "1000")  # no window manager: size it ourselves
+        gui.run("xdotool", "windowfocus", "--sync", main_window)
+        time.sleep(1)
+        gui.screenshot("01_loaded.png")
+
+        # Filters (Alt+L); Texture is the second last entry (Up from the top wraps to Camera, the
+        # last); then down the Texture submenu to the filter.
+        gui.key("alt+l", "Up", "Up", "Right", *["Down"] * index)
+        gui.screenshot("02_filters_texture_menu.png")
+        gui.key("Return")
+        dialog = gui.window(f"^{FILTER}$", timeout=20)
+        if not check(dialog is not None, "Filters > Texture > Low-stretch parameterization opens the filter's dialog"):
+            gui.screenshot("03_no_dialog.png")
+            return 1
+        gui.run("xdotool", "windowmove", dialog, "1130", "0")  # beside the main window, not over the mesh
+        time.sleep(1)
+        gui.screenshot("03_dialog.png")
+
+        gui.run("xdotool", "windowfocus", "--sync", dialog)
+        gui.key("space")  # the dialog's Apply button has the focus
+        outcome = wait_for_text(log, [f"Applied filter {FILTER}", "Filter failed"], 300)
+        time.sleep(2)  # let the view redraw with the texture
+        gui.screenshot("lowstretch_gui.png")
+        with open(log, errors="replace") as f:
+            text = f.read()
+        check(outcome == f"Applied filter {FILTER}", f"Apply runs the filter and MeshLab reports success ({outcome})")
+        check("pass 0: L2 stretch" in text and "kept pass" in text, "MeshLab's log holds the filter's metrics")
+        check(gui.window("^Filter Failure", timeout=1) is None, "no failure message box")
+    finally:
+        gui.stop()
+    print(f"{len(failed)} check(s) failed" if failed else "all checks passed")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
