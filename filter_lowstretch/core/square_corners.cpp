@@ -78,6 +78,9 @@ SquareCorners choose_square_corners(const DiskMesh& disk) {
     result.corners[size_t(k)] = std::max(result.corners[size_t(k)], result.corners[size_t(k) - 1] + 1);
   const std::vector<Arc> arcs = arcs_needing_a_corner(disk);
   if (collapsed_chords(arcs, result.corners, n) == 0) return result;
+  // The search below costs about 3 n^2 steps per position of the shortest arc: past this many
+  // boundary vertices, bow the sides instead of searching.
+  const int largest_searched_loop = 10000;
 
   // Name the corner inside the shortest arc c0 and try each of its positions; then place c1..c3
   // on the loop unrolled from c0 so that no arc lies strictly between consecutive corners.
@@ -87,8 +90,9 @@ SquareCorners choose_square_corners(const DiskMesh& disk) {
   const double inf = std::numeric_limits<double>::infinity();
   double best_cost = inf;
   std::array<int, 4> best{};
-  for (int j = 0; j < shortest.count; ++j) {
-    const int s = (shortest.first + j) % n;
+  const int tries = std::min(shortest.count, 32);  // positions of c0 tried, spread over the arc
+  for (int j = 0; j < tries && n <= largest_searched_loop; ++j) {
+    const int s = (shortest.first + int((long long)j * shortest.count / tries)) % n;
     const auto unrolled_arc = [&](int q) {  // arc length from s to unrolled position q in [0, n]
       const int i = (s + q) % n;
       double a = arc[size_t(i)] - arc[size_t(s)];
