@@ -1,0 +1,101 @@
+#include "filter_lowstretch.h"
+
+#include <QImage>
+
+#include <common/mlexception.h>
+
+#include "filter_lowstretch/plugin_common/lowstretch_filter.h"
+
+namespace plugin = lowstretch::plugin;
+
+namespace {
+
+QStringList entries(const plugin::EnumParameter& p) {
+  QStringList list;
+  for (const char* entry : p.entries) list << entry;
+  return list;
+}
+
+}  // namespace
+
+FilterLowStretchPlugin::FilterLowStretchPlugin() {
+  typeList = {FP_LOW_STRETCH};
+  for (ActionIDType type : types()) actionList.push_back(new QAction(filterName(type), this));
+}
+
+QString FilterLowStretchPlugin::pluginName() const { return plugin::kPluginName; }
+
+QString FilterLowStretchPlugin::vendor() const { return "filter_lowstretch"; }
+
+QString FilterLowStretchPlugin::filterName(ActionIDType) const { return plugin::kFilterName; }
+
+QString FilterLowStretchPlugin::pythonFilterName(ActionIDType) const { return plugin::kPythonName; }
+
+QString FilterLowStretchPlugin::filterInfo(ActionIDType) const { return plugin::kFilterInfo; }
+
+FilterPlugin::FilterClass FilterLowStretchPlugin::getClass(const QAction*) const { return FilterPlugin::Texture; }
+
+// Nothing is asked of the framework before applyFilter: a failing run must leave the masks as they were.
+int FilterLowStretchPlugin::getRequirements(const QAction*) { return MeshModel::MM_NONE; }
+
+int FilterLowStretchPlugin::getPreConditions(const QAction*) const { return MeshModel::MM_FACENUMBER; }
+
+int FilterLowStretchPlugin::postCondition(const QAction*) const { return plugin::written_data_mask<MeshModel>(); }
+
+FilterPlugin::FilterArity FilterLowStretchPlugin::filterArity(const QAction*) const { return SINGLE_MESH; }
+
+RichParameterList FilterLowStretchPlugin::initParameterList(const QAction*, const MeshModel&) {
+  const plugin::Parameters& p = plugin::parameters();
+  RichParameterList parameters;
+  parameters.addParam(RichEnum(p.boundary.name, p.boundary.default_index, entries(p.boundary), p.boundary.label,
+                               p.boundary.tooltip));
+  parameters.addParam(
+      RichFloat(p.exponent.name, Scalarm(p.exponent.default_value), p.exponent.label, p.exponent.tooltip));
+  parameters.addParam(RichInt(p.max_passes.name, p.max_passes.default_value, p.max_passes.label, p.max_passes.tooltip));
+  parameters.addParam(RichEnum(p.weights.name, p.weights.default_index, entries(p.weights), p.weights.label,
+                               p.weights.tooltip));
+  return parameters;
+}
+
+void FilterLowStretchPlugin::fail(const std::string& message) const {
+  log(plugin::failure_line(message));
+  throw MLException(QString::fromStdString(message));
+}
+
+std::map<std::string, QVariant> FilterLowStretchPlugin::applyFilter(const QAction*, const RichParameterList& parameters,
+                                                                    MeshDocument& md, unsigned int& postConditionMask,
+                                                                    vcg::CallBackPos* cb) {
+  if (md.mm() == nullptr) fail("no mesh is loaded");
+  MeshModel& m = *md.mm();
+
+  const plugin::Parameters& p = plugin::parameters();
+  lowstretch::Options options;
+  const lowstretch::Error invalid =
+      plugin::make_options(parameters.getEnum(p.boundary.name), parameters.getEnum(p.weights.name),
+                           parameters.getFloat(p.exponent.name), parameters.getInt(p.max_passes.name), options);
+  if (invalid) fail(lowstretch::message(invalid));
+  options.progress = plugin::progress(cb);
+
+  const plugin::Run run = plugin::run(m.cm, options, [this](const std::string& line) { log(line); });
+  if (!run.error.empty()) fail(run.error);
+
+  const int written = plugin::written_data_mask<MeshModel>();
+  m.updateDataMask(written);
+  lowstretch::write_parameterization(m.cm, run.rows, run.result);
+  // Every wedge now refers to texture 0. MeshLab 2022+ keeps the image with the mesh and saves it
+  // next to the mesh file under the texture's name.
+  m.clearTextures();
+  const QImage checkerboard(plugin::checkerboard_path());
+  if (checkerboard.isNull())
+    log("note: checkerboard.png was not found next to the plugin; no texture attached");
+  else
+    m.addTexture("checkerboard.png", checkerboard);
+  postConditionMask = unsigned(written);
+
+  std::map<std::string, QVariant> values;
+  for (const plugin::OutputValue& v : plugin::output_values(run.result))
+    values[v.name] = v.is_int ? QVariant(v.int_value) : QVariant(v.real_value);
+  return values;
+}
+
+MESHLAB_PLUGIN_NAME_EXPORTER(FilterLowStretchPlugin)

@@ -1,0 +1,160 @@
+#include "lowstretch_filter.h"
+
+#include <dlfcn.h>
+
+#include <QFileInfo>
+#include <cstdarg>
+#include <cstdio>
+
+namespace lowstretch {
+namespace plugin {
+
+const char* const kFilterName = "Low-stretch parameterization";
+const char* const kPythonName = "compute_texcoord_parametrization_low_stretch";
+const char* const kPluginName = "FilterLowStretch";
+const char* const kFilterInfo =
+    "Computes a low-stretch parameterization of a mesh that is a topological disk (connected, "
+    "manifold, one boundary loop): the boundary is mapped to a square, a circle or a free "
+    "(natural) boundary, the interior starts from Floater's shape-preserving map, and each "
+    "pass divides the weights by the vertex stretch and solves again, keeping the pass of "
+    "lowest L2 stretch.<br>"
+    "Writes per-wedge and per-vertex texture coordinates in [0,1]<sup>2</sup> (texture 0, a "
+    "checkerboard), per-vertex quality = vertex stretch and per-face quality = triangle "
+    "stretch (use <i>Colorize by vertex/face quality</i> to see where the map stretches). "
+    "The log lists the stretch and distortion of every pass. A mesh that is not a disk is "
+    "left unchanged and the reason is reported.<br><br>"
+    "See: <i>Shin Yoshizawa, Alexander Belyaev, Hans-Peter Seidel</i><br>"
+    "<b>\"A fast and simple stretch-minimizing mesh parameterization\"</b><br>"
+    "Shape Modeling International 2004, pages 200-208.";
+
+namespace {
+
+// The enum entries follow the core's enum order.
+const BoundaryShape kBoundaryValues[] = {BoundaryShape::Square, BoundaryShape::Circle, BoundaryShape::Natural};
+const InitialWeights kWeightsValues[] = {InitialWeights::Floater, InitialWeights::MeanValue, InitialWeights::Harmonic};
+
+Parameters make_parameters() {
+  const Options defaults;
+  return Parameters{
+      EnumParameter{"boundaryShape", 0, {"Square", "Circle", "Natural"}, "Boundary shape",
+                    "Where the boundary loop goes: the unit square (the paper's choice), the "
+                    "circle (strictly convex: no pass can flip a triangle), or the free boundary "
+                    "of a conformal map (least distortion at the boundary; flips are possible "
+                    "and are reported)."},
+      FloatParameter{"exponent", defaults.exponent, "Exponent",
+                     "eta in (0, 1]: each pass divides the weights by the vertex stretch to the "
+                     "power eta. 1 is the paper's choice; smaller values redistribute the "
+                     "stretch more gently."},
+      IntParameter{"maxPasses", defaults.max_passes, "Max passes",
+                   "At most this many reweighting passes; the run stops earlier when the L2 "
+                   "stretch stops falling. 0 gives the initial map only, 1 gives U1."},
+      EnumParameter{"initialWeights", 0, {"Floater shape-preserving", "Mean value", "Harmonic"}, "Initial weights",
+                    "Weights of the initial map U0: Floater's shape-preserving weights (the "
+                    "paper's choice), mean value weights, or harmonic (cotangent) weights, "
+                    "which can be negative and are offered for comparison only."},
+  };
+}
+
+std::string format(const char* f, ...) __attribute__((format(printf, 1, 2)));
+std::string format(const char* f, ...) {
+  char buffer[4096];  // as MeshLab's log, which formats with snprintf into 4096 bytes
+  va_list args;
+  va_start(args, f);
+  std::vsnprintf(buffer, sizeof buffer, f, args);
+  va_end(args);
+  return buffer;
+}
+
+Error invalid(const std::string& detail) {
+  Error error;
+  error.code = ErrorCode::InvalidOption;
+  error.detail = detail;
+  return error;
+}
+
+// "Boundary shape must be 0 (Square), 1 (Circle) or 2 (Natural), got 3"
+Error invalid_enum(const EnumParameter& p, int value) {
+  std::string choices;
+  for (size_t i = 0; i < p.entries.size(); ++i) {
+    if (i > 0) choices += i + 1 == p.entries.size() ? " or " : ", ";
+    choices += std::to_string(i) + " (" + p.entries[i] + ")";
+  }
+  return invalid(std::string(p.label) + " must be " + choices + ", got " + std::to_string(value));
+}
+
+}  // namespace
+
+const Parameters& parameters() {
+  static const Parameters p = make_parameters();
+  return p;
+}
+
+Error make_options(int boundary, int weights, double exponent, int max_passes, Options& options) {
+  const Parameters& p = parameters();
+  if (boundary < 0 || boundary >= int(p.boundary.entries.size())) return invalid_enum(p.boundary, boundary);
+  if (weights < 0 || weights >= int(p.weights.entries.size())) return invalid_enum(p.weights, weights);
+  if (!(exponent > 0 && exponent <= 1))
+    return invalid(std::string(p.exponent.label) + " must be in (0, 1], got " + format("%g", exponent));
+  if (max_passes < 0)
+    return invalid(std::string(p.max_passes.label) + " must be 0 or more, got " + std::to_string(max_passes));
+  options.boundary = kBoundaryValues[boundary];
+  options.weights = kWeightsValues[weights];
+  options.exponent = exponent;
+  options.max_passes = max_passes;
+  return {};
+}
+
+std::string header_line(int vertices, int faces, const Options& options) {
+  return format("%s: %d vertices, %d faces; boundary %s, initial weights %s, exponent %g, max passes %d", kFilterName,
+                vertices, faces, to_string(options.boundary), to_string(options.weights), options.exponent,
+                options.max_passes);
+}
+
+std::vector<std::string> result_lines(const Result& result) {
+  std::vector<std::string> lines;
+  for (const PassMetrics& p : result.passes)
+    lines.push_back(format("pass %d: L2 stretch %.6g, Linf stretch %.6g, edge distortion %.6g, angle distortion %.6g, "
+                           "area distortion %.6g, flipped %d, degenerate %d, %.3f s",
+                           p.pass, p.l2_stretch, p.linf_stretch, p.edge_distortion, p.angle_distortion,
+                           p.area_distortion, p.flipped, p.degenerate, p.seconds));
+  const PassMetrics& kept = result.passes.at(size_t(result.chosen_pass));
+  lines.push_back(format("kept pass %d (L2 stretch %.6g); stop reason: %s; total %.3f s", kept.pass, kept.l2_stretch,
+                         to_string(result.stop_reason), result.seconds_total));
+  for (const std::string& note : result.notes) lines.push_back("note: " + note);
+  return lines;
+}
+
+std::string failure_line(const std::string& message) { return std::string(kFilterName) + " failed: " + message; }
+
+std::vector<OutputValue> output_values(const Result& result) {
+  const PassMetrics& kept = result.passes.at(size_t(result.chosen_pass));
+  auto real = [](const char* name, double value) { return OutputValue{name, false, 0, value}; };
+  auto integer = [](const char* name, int value) { return OutputValue{name, true, value, double(value)}; };
+  return {
+      real("l2_stretch", kept.l2_stretch),
+      real("linf_stretch", kept.linf_stretch),
+      real("edge_distortion", kept.edge_distortion),
+      real("angle_distortion", kept.angle_distortion),
+      real("area_distortion", kept.area_distortion),
+      integer("flipped", kept.flipped),
+      integer("degenerate", kept.degenerate),
+      integer("kept_pass", kept.pass),
+      integer("passes", int(result.passes.size())),  // computed, including a rejected last one
+      real("initial_l2_stretch", result.passes.front().l2_stretch),
+      real("seconds", result.seconds_total),
+  };
+}
+
+QString checkerboard_path() {
+  Dl_info info;
+  if (dladdr(reinterpret_cast<void*>(&checkerboard_path), &info) == 0 || info.dli_fname == nullptr) return {};
+  const QFileInfo plugin(QString::fromLocal8Bit(info.dli_fname));
+  for (const QString& dir : {plugin.absolutePath(), QFileInfo(plugin.canonicalFilePath()).absolutePath()}) {
+    const QFileInfo texture(dir + "/filter_lowstretch/checkerboard.png");
+    if (texture.isFile()) return texture.absoluteFilePath();
+  }
+  return {};
+}
+
+}  // namespace plugin
+}  // namespace lowstretch

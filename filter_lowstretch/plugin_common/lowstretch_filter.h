@@ -1,0 +1,127 @@
+// What every MeshLab adapter of the "Low-stretch parameterization" filter shares, whatever the
+// plugin API (MeshLab 2020.09's MeshFilterInterface, MeshLab 2022+'s FilterPlugin): the names and
+// texts, the parameters (name, default, label, tooltip, enum entries), the check of the parameter
+// values, the log lines, the run itself (vcglib mesh -> core -> log) and the output values.
+// An adapter only translates these into its API's types and writes the result into the mesh.
+// Nothing here knows MeshModel or RichParameter; the mesh side is vcglib (mesh_arrays.h).
+#pragma once
+#include <QString>
+#include <algorithm>
+#include <exception>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "filter_lowstretch/core/error.h"
+#include "filter_lowstretch/core/parameterize.h"
+#include "filter_lowstretch/vcg/mesh_arrays.h"
+
+namespace lowstretch {
+namespace plugin {
+
+extern const char* const kFilterName;  // the display name, also the name .mlx scripts use
+extern const char* const kPythonName;  // the pymeshlab name (FilterPlugin::pythonFilterName)
+extern const char* const kPluginName;
+extern const char* const kFilterInfo;  // HTML shown in MeshLab's filter dialog
+
+// A parameter as MeshLab shows it. `name` is what scripts spell (.mlx; pymeshlab lowercases it).
+struct EnumParameter {
+  const char* name;
+  int default_index;
+  std::vector<const char*> entries;  // in the order of the core's enum
+  const char* label;
+  const char* tooltip;
+};
+struct FloatParameter {
+  const char* name;
+  double default_value;
+  const char* label;
+  const char* tooltip;
+};
+struct IntParameter {
+  const char* name;
+  int default_value;
+  const char* label;
+  const char* tooltip;
+};
+// The filter's four parameters, in the order the dialog lists them.
+struct Parameters {
+  EnumParameter boundary;
+  FloatParameter exponent;
+  IntParameter max_passes;
+  EnumParameter weights;
+};
+const Parameters& parameters();
+
+// The core's options from the parameter values as MeshLab hands them over. On an invalid value
+// returns an InvalidOption error whose detail names the parameter by its label; options is then
+// left as it was.
+Error make_options(int boundary, int weights, double exponent, int max_passes, Options& options);
+
+// Maps MeshLab's progress callback (percent, stage; false cancels) to the core's.
+template <class CallBack>
+std::function<bool(double, const char*)> progress(CallBack* cb) {
+  return [cb](double fraction, const char* stage) {
+    return cb == nullptr || cb(int(100 * std::min(1.0, std::max(0.0, fraction))), stage);
+  };
+}
+
+// Log lines, exactly as both adapters write them.
+std::string header_line(int vertices, int faces, const Options& options);
+std::vector<std::string> result_lines(const Result& result);  // every pass, the kept pass, notes
+std::string failure_line(const std::string& message);           // "<filter name> failed: <message>"
+
+// The filter's output values (pymeshlab returns them as a dict): metrics of the kept pass.
+struct OutputValue {
+  std::string name;
+  bool is_int;
+  int int_value;
+  double real_value;
+};
+std::vector<OutputValue> output_values(const Result& result);
+
+// One run on a vcglib mesh: logs the header, converts the live elements, runs the core, logs the
+// result. `error` is empty on success, else the message for the user; the mesh is not touched
+// either way (the adapter writes the result with write_parameterization after enabling the
+// components).
+struct Run {
+  std::string error;
+  ArrayRows rows;
+  Result result;
+};
+template <class MeshType>
+Run run(const MeshType& m, const Options& options, const std::function<void(const std::string&)>& log) {
+  log(header_line(m.vn, m.fn, options));
+  Eigen::MatrixXd V;
+  Eigen::MatrixXi F;
+  Run run;
+  run.rows = mesh_to_arrays(m, V, F);
+  try {
+    run.result = parameterize(V, F, options);
+  } catch (const std::exception& e) {  // e.g. std::bad_alloc: never let it reach MeshLab's event loop
+    run.error = std::string("internal error: ") + e.what();
+    return run;
+  }
+  if (run.result.error) {
+    run.error = message(run.result.error);
+    return run;
+  }
+  for (const std::string& line : result_lines(run.result)) log(line);
+  return run;
+}
+
+// The checkerboard texture: "filter_lowstretch/checkerboard.png" next to the plugin file (it is
+// installed there, and copied there in the build tree). The plugin may be loaded through a
+// symlink, so both the path it was loaded from and its real path are tried. Empty if not found.
+QString checkerboard_path();
+
+// The MeshModel data the filter writes (wedge and vertex texcoords, vertex and face quality); the
+// MM_* names are the same in both MeshLab APIs.
+template <class MeshModelType>
+int written_data_mask() {
+  return MeshModelType::MM_WEDGTEXCOORD | MeshModelType::MM_VERTTEXCOORD | MeshModelType::MM_VERTQUALITY |
+         MeshModelType::MM_FACEQUALITY;
+}
+
+}  // namespace plugin
+}  // namespace lowstretch

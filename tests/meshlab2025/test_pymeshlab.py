@@ -1,0 +1,196 @@
+#!/usr/bin/env python3
+"""pymeshlab 2025.7 loads the filter: a virtual environment gets pymeshlab==2025.7.post1 from PyPI,
+then this script runs itself again with that environment's Python (--inside) and checks:
+  - the MeshLab 2025.07 (float) build is refused by pymeshlab, whose MeshLab uses double scalars
+    (this is why there is a pymeshlab build of the plugin);
+  - pymeshlab.load_plugin(<pymeshlab build>) adds compute_texcoord_parametrization_low_stretch;
+  - on a real disk, apply_filter returns the dict of output values (kept pass, L2/Linf stretch,
+    distortions, flips, time), the mesh gets per-wedge texcoords in [0,1]^2 with no flipped
+    triangle, the L2 stretch recomputed from those texcoords and the positions equals the returned
+    one, per-face quality equals the recomputed face stretch, and the Circle boundary works too;
+  - on a mesh that is not a disk it raises PyMeshLabException with the core's message, and the mesh
+    is unchanged;
+  - with --readme: the README's Python snippet (the ```python block that calls
+    pymeshlab.load_plugin), run as written from a folder whose build/ is this build tree.
+
+  test_pymeshlab.py --plugin SO --float-plugin SO --disk OFF --bad OFF --expect WORDS --venv DIR --work DIR
+                    [--readme README.md --build-dir DIR]
+"""
+import argparse
+import json
+import os
+import re
+import subprocess
+import sys
+
+PYMESHLAB = "pymeshlab==2025.7.post1"
+NAME = "compute_texcoord_parametrization_low_stretch"
+KEYS = {"l2_stretch": float, "linf_stretch": float, "edge_distortion": float, "angle_distortion": float,
+        "area_distortion": float, "flipped": int, "degenerate": int, "kept_pass": int, "passes": int,
+        "initial_l2_stretch": float, "seconds": float}
+
+
+class Checks:
+    def __init__(self):
+        self.failed = []
+
+    def __call__(self, ok, what):
+        print(("ok:     " if ok else "FAILED: ") + what, flush=True)
+        if not ok:
+            self.failed.append(what)
+        return ok
+
+
+def venv_python(venv):
+    """The environment's Python, with pymeshlab installed (pip runs only when it is missing or
+    another version)."""
+    python = os.path.join(venv, "bin", "python")
+    if not os.path.isfile(python):
+        subprocess.run([sys.executable, "-m", "venv", venv], check=True)
+    have = subprocess.run([python, "-m", "pip", "show", "pymeshlab"], capture_output=True, text=True).stdout
+    if "Version: 2025.7.post1" not in have:
+        subprocess.run([python, "-m", "pip", "install", "-q", "--disable-pip-version-check", PYMESHLAB], check=True)
+    return python
+
+
+def stretch(np, V, F, wedge_uv):
+    """Per-face stretch sigma(T) and the L2 stretch of a parameterization, normalized as the core
+    does (design.md section 1 step 4), from 3D positions and per-wedge texcoords (3 rows per face)."""
+    p1, p2, p3 = V[F[:, 0]], V[F[:, 1]], V[F[:, 2]]
+    uv = wedge_uv.reshape(-1, 3, 2)
+    s1, t1, s2, t2, s3, t3 = uv[:, 0, 0], uv[:, 0, 1], uv[:, 1, 0], uv[:, 1, 1], uv[:, 2, 0], uv[:, 2, 1]
+    area_u = 0.5 * ((s2 - s1) * (t3 - t1) - (s3 - s1) * (t2 - t1))
+    ss = (p1 * (t2 - t3)[:, None] + p2 * (t3 - t1)[:, None] + p3 * (t1 - t2)[:, None]) / (2 * area_u)[:, None]
+    st = (p1 * (s3 - s2)[:, None] + p2 * (s1 - s3)[:, None] + p3 * (s2 - s1)[:, None]) / (2 * area_u)[:, None]
+    sigma = np.sqrt(0.5 * ((ss * ss).sum(1) + (st * st).sum(1)))
+    area = 0.5 * np.linalg.norm(np.cross(p2 - p1, p3 - p1), axis=1)
+    scale = np.sqrt(np.abs(area_u).sum() / area.sum())
+    return area_u, scale * sigma, scale * np.sqrt((area * sigma ** 2).sum() / area.sum()), area
+
+
+def inside(args):
+    """Runs in the virtual environment."""
+    import numpy as np
+    import pymeshlab
+
+    check = Checks()
+    print(f"pymeshlab {pymeshlab.__file__}", flush=True)
+    try:
+        pymeshlab.load_plugin(args.float_plugin)
+        check(False, "pymeshlab refuses the float (MeshLab 2025.07) build")
+    except pymeshlab.PyMeshLabException as e:
+        check("different floating point precision" in str(e),
+              f"pymeshlab refuses the float (MeshLab 2025.07) build: '{e}'")
+
+    pymeshlab.load_plugin(args.plugin)
+    check(NAME in pymeshlab.filter_list(), f"load_plugin adds {NAME} to pymeshlab.filter_list()")
+
+    ms = pymeshlab.MeshSet()
+    ms.load_new_mesh(args.disk)
+    out = ms.apply_filter(NAME)
+    print(f"        {json.dumps(out)}")
+    check(isinstance(out, dict) and set(out) == set(KEYS) and all(type(out[k]) is t for k, t in KEYS.items()),
+          f"apply_filter returns a dict of {len(KEYS)} output values with their types")
+    check(out["flipped"] == 0 and out["degenerate"] == 0, "no flipped or degenerate triangle (square)")
+    check(1 <= out["l2_stretch"] < out["initial_l2_stretch"] and 0 <= out["kept_pass"] < out["passes"],
+          f"L2 stretch {out['l2_stretch']:.6g} < initial {out['initial_l2_stretch']:.6g}, kept pass "
+          f"{out['kept_pass']} of {out['passes']}")
+    m = ms.current_mesh()
+    V, F = m.vertex_matrix(), m.face_matrix()
+    if check(m.has_wedge_tex_coord(), "the mesh has per-wedge texcoords"):
+        wtc = m.wedge_tex_coord_matrix()
+        check(wtc.shape == (3 * len(F), 2) and wtc.min() >= 0 and wtc.max() <= 1,
+              f"wedge texcoords: shape {wtc.shape} (3 x {len(F)} faces), range [{wtc.min():.6g}, {wtc.max():.6g}]")
+        area_u, face_sigma, l2, area = stretch(np, V, F, wtc.astype(np.float64))
+        check(int((area_u <= 0).sum()) == 0, f"no flipped or zero-area triangle in the texcoords "
+              f"({int((area_u < 0).sum())} flipped, {int((area_u == 0).sum())} zero)")
+        check(abs(l2 - out["l2_stretch"]) <= 1e-4 * out["l2_stretch"],
+              f"L2 stretch recomputed from the wedge texcoords {l2:.6g} = returned {out['l2_stretch']:.6g}")
+        if check(m.has_face_scalar(), "the mesh has per-face quality"):
+            # The quality is the core's double value; the recomputed one sees float texcoords, which
+            # moves the stretch of thin parameter triangles by up to a few percent: compare the bulk,
+            # and the area-weighted mean of the quality with the returned L2 stretch.
+            q = m.face_scalar_array()
+            rel = np.abs(q - face_sigma) / np.maximum(face_sigma, 1e-30)
+            check(float(np.percentile(rel, 99)) <= 1e-3,
+                  f"per-face quality = recomputed face stretch (relative difference: 99th percentile "
+                  f"{np.percentile(rel, 99):.1e}, largest {rel.max():.1e})")
+            l2_quality = float(np.sqrt((area * q ** 2).sum() / area.sum()))
+            check(abs(l2_quality - out["l2_stretch"]) <= 1e-9 * out["l2_stretch"],
+                  f"sqrt(sum A q^2 / sum A) over the per-face quality {l2_quality:.10g} = returned L2 stretch")
+        check(m.has_vertex_scalar(), "the mesh has per-vertex quality")
+        check(m.texture_number() == 1, f"one texture (the checkerboard): {m.textures() if hasattr(m, 'textures') else ''}")
+
+    ms.load_new_mesh(args.disk)
+    circle = ms.apply_filter(NAME, boundaryshape="Circle", maxpasses=3)
+    check(circle["flipped"] == 0 and circle["passes"] <= 4,
+          f"boundaryshape='Circle', maxpasses=3: L2 stretch {circle['l2_stretch']:.6g}, {circle['passes']} passes, "
+          f"no flip")
+
+    ms.load_new_mesh(args.bad)
+    m = ms.current_mesh()
+    before = (m.vertex_matrix().copy(), m.face_matrix().copy())
+    try:
+        ms.apply_filter(NAME)
+        check(False, "a mesh that is not a disk raises PyMeshLabException")
+    except pymeshlab.PyMeshLabException as e:
+        check(args.expect in str(e), f"a mesh that is not a disk raises PyMeshLabException naming the problem "
+              f"('{args.expect}'): '{' / '.join(str(e).splitlines())}'")
+    m = ms.current_mesh()
+    check((m.vertex_matrix() == before[0]).all() and (m.face_matrix() == before[1]).all()
+          and not m.has_wedge_tex_coord(), "that mesh is unchanged and has no texcoords")
+    return check
+
+
+def run_readme(check, args, python):
+    with open(args.readme) as f:
+        blocks = re.findall(r"```python\n(.*?)```", f.read(), re.S)
+    snippet = [b for b in blocks if "pymeshlab.load_plugin" in b]
+    if not snippet:
+        print(f"info:   {args.readme} has no ```python block calling pymeshlab.load_plugin: not run")
+        return
+    folder = os.path.join(args.work, "readme")
+    os.makedirs(folder, exist_ok=True)
+    link = os.path.join(folder, "build")
+    if os.path.islink(link):
+        os.remove(link)
+    os.symlink(os.path.abspath(args.build_dir), link)
+    with open(os.path.join(folder, "snippet.py"), "w") as f:
+        f.write(snippet[0])
+    proc = subprocess.run([python, "snippet.py"], cwd=folder, capture_output=True, text=True, timeout=600)
+    print("        README snippet output:\n" + "".join("        | " + line + "\n" for line in proc.stdout.splitlines()))
+    check(proc.returncode == 0, f"the README's Python snippet runs (exit code {proc.returncode}) {proc.stderr[-500:]}")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--plugin", required=True, help="the pymeshlab (double) build of libfilter_lowstretch.so")
+    parser.add_argument("--float-plugin", required=True, help="the MeshLab 2025.07 (float) build")
+    parser.add_argument("--disk", required=True, help="a disk mesh (OFF)")
+    parser.add_argument("--bad", required=True, help="a mesh that is not a disk (OFF)")
+    parser.add_argument("--expect", required=True, help="words of the message for --bad")
+    parser.add_argument("--venv", help="virtual environment folder (created if missing)")
+    parser.add_argument("--work", help="work folder")
+    parser.add_argument("--readme", help="README.md whose Python snippet is run")
+    parser.add_argument("--build-dir", help="the build tree the snippet's build/ paths refer to")
+    parser.add_argument("--inside", action="store_true", help=argparse.SUPPRESS)
+    args = parser.parse_args()
+    if args.inside:
+        check = inside(args)
+        return 1 if check.failed else 0
+
+    os.makedirs(args.work, exist_ok=True)
+    python = venv_python(args.venv)
+    check = Checks()
+    proc = subprocess.run([python, os.path.abspath(__file__), "--inside", "--plugin", args.plugin,
+                           "--float-plugin", args.float_plugin, "--disk", args.disk, "--bad", args.bad, "--expect", args.expect],
+                          cwd=args.work, timeout=900)
+    check(proc.returncode == 0, f"the checks inside the pymeshlab environment pass (exit code {proc.returncode})")
+    if args.readme and args.build_dir:
+        run_readme(check, args, python)
+    print(f"{len(check.failed)} check(s) failed" if check.failed else "all checks passed")
+    return 1 if check.failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
