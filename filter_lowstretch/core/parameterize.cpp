@@ -117,7 +117,7 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
       }
     }
     const double reweighting = seconds_since(phase);
-    if (!solver.solve(weights, boundary_uv, uv))
+    if (!solver.solve(weights, boundary_uv, uv) || !uv.allFinite())
       return failed({ErrorCode::SolverFailed, pass, "singular or non-finite system"});
     phase = Clock::now();
     stretch = face_stretch(disk.V, disk.F, uv);

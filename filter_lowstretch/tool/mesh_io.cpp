@@ -1,6 +1,8 @@
 #include "mesh_io.h"
 
 #include "obj_reader.h"
+#include "off_reader.h"
+#include "ply_reader.h"
 
 #include <algorithm>
 #include <cctype>
@@ -11,8 +13,6 @@
 
 #include <wrap/io_trimesh/export_obj.h>
 #include <wrap/io_trimesh/export_ply.h>
-#include <wrap/io_trimesh/import_off.h>
-#include <wrap/io_trimesh/import_ply.h>
 
 namespace lowstretch {
 
@@ -30,79 +30,6 @@ long long file_size(const std::string& path) {
   return in ? (long long)in.tellg() : -1;
 }
 
-// Every vertex takes at least 6 bytes (ASCII "0 0 0\n"; binary: three 4-byte floats) and every
-// face at least 4 (binary: a 1-byte count and three 1-byte indices). A header that declares
-// more than the file can hold is refused before the importer allocates for it.
-bool counts_fit(long long vertices, long long faces, long long size, std::string& error) {
-  if (vertices < 0 || faces < 0 || vertices > (1LL << 31) - 1 || faces > (1LL << 31) - 1 ||
-      vertices * 6 + faces * 4 > size) {
-    error = "the header declares " + std::to_string(vertices) + " vertices and " + std::to_string(faces) +
-            " faces, more than the " + std::to_string(size) + "-byte file can hold: the file is corrupt or cut short";
-    return false;
-  }
-  return true;
-}
-
-bool check_off_header(const std::string& path, long long size, std::string& error) {
-  std::ifstream in(path);
-  std::string word;
-  while (in >> word && word[0] == '#') std::getline(in, word);  // comments may come first
-  if (!in || word.find("OFF") == std::string::npos) {
-    error = "not an OFF file (no OFF header)";
-    return false;
-  }
-  // Counts may follow on the same line ("OFF 8 6 0"); skip comments.
-  std::string token;
-  long long counts[2];
-  for (int i = 0; i < 2;) {
-    if (!(in >> token)) { error = "the OFF header has no vertex and face counts"; return false; }
-    if (token[0] == '#') { std::getline(in, token); continue; }
-    try {
-      size_t used = 0;
-      counts[i] = std::stoll(token, &used);
-      if (used != token.size()) throw std::invalid_argument(token);
-    } catch (const std::exception&) {
-      error = "the OFF header has a malformed count '" + token + "'";
-      return false;
-    }
-    ++i;
-  }
-  return counts_fit(counts[0], counts[1], size, error);
-}
-
-bool check_ply_header(const std::string& path, long long size, std::string& error) {
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  long long vertices = 0, faces = 0;
-  if (!std::getline(in, line) || line.compare(0, 3, "ply") != 0) {
-    error = "not a PLY file (no ply header)";
-    return false;
-  }
-  for (int lines = 0; std::getline(in, line) && line.compare(0, 10, "end_header") != 0; ++lines) {
-    if (lines > 10000) { error = "the PLY header never ends"; return false; }
-    std::istringstream words(line);
-    std::string kind, name;
-    long long count = 0;
-    if (words >> kind >> name && kind == "element") {
-      if (!(words >> count)) { error = "the PLY header has a malformed element count"; return false; }
-      if (name == "vertex") vertices = count;
-      if (name == "face") faces = count;
-    }
-  }
-  return counts_fit(vertices, faces, size, error);
-}
-
-template <class Importer>
-bool run_importer(ToolMesh& mesh, const std::string& path, std::string& error) {
-  int mask = 0;
-  const int code = Importer::Open(mesh, path.c_str(), mask);
-  if (code != 0) {
-    error = Importer::ErrorMsg(code);
-    return false;
-  }
-  return true;
-}
-
 }  // namespace
 
 bool read_mesh(const std::string& path, ToolMesh& mesh, std::string& error) {
@@ -113,9 +40,9 @@ bool read_mesh(const std::string& path, ToolMesh& mesh, std::string& error) {
   bool ok = false;
   try {
     if (ext == "off") {
-      ok = check_off_header(path, size, error) && run_importer<vcg::tri::io::ImporterOFF<ToolMesh>>(mesh, path, error);
+      ok = read_off(path, size, mesh, error);
     } else if (ext == "ply") {
-      ok = check_ply_header(path, size, error) && run_importer<vcg::tri::io::ImporterPLY<ToolMesh>>(mesh, path, error);
+      ok = read_ply(path, size, mesh, error);
     } else if (ext == "obj") {
       ok = read_obj(path, mesh, error);
     } else {

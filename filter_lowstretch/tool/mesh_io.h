@@ -1,4 +1,4 @@
-// Reading and writing meshes with vcglib's importers and exporters (the code MeshLab runs),
+// Reading meshes with the tool's own strict readers and writing them with vcglib's exporters,
 // guarded against files that would make them crash or allocate without bound.
 #pragma once
 #include <string>
@@ -7,7 +7,7 @@
 
 namespace lowstretch {
 
-// OFF, PLY (ASCII or binary; vcglib) or OBJ (obj_reader.h), by extension. Returns false with a one-line reason.
+// OFF (off_reader.h), PLY (ASCII or binary; ply_reader.h) or OBJ (obj_reader.h), by extension. Returns false with a one-line reason.
 bool read_mesh(const std::string& path, ToolMesh& mesh, std::string& error);
 
 // OBJ (per-corner vt and an .mtl naming `texture`) or PLY (per-wedge texcoords, per-vertex and

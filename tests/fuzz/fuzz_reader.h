@@ -1,0 +1,63 @@
+// Shared body of the reader fuzz targets: the input bytes become a file with the target's
+// extension, which goes through the tool's path: read_mesh (picks the reader by extension),
+// mesh_to_arrays, parameterize (2 passes) and, when that succeeds, write_parameterization.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <unistd.h>
+
+#include "core/parameterize.h"
+#include "tool/mesh_io.h"
+#include "vcg/mesh_arrays.h"
+
+namespace lowstretch_fuzz {
+
+// One file per process (libFuzzer's -jobs/-fork workers are processes), removed at exit.
+inline std::string& temp_file() {
+  static std::string path;
+  return path;
+}
+inline const std::string& temp_path(const char* extension) {
+  std::string& path = temp_file();
+  if (path.empty()) {
+    const char* dir = std::getenv("TMPDIR");
+    path = std::string(dir && *dir ? dir : "/tmp") + "/lowstretch_fuzz_" + std::to_string(getpid()) + "." + extension;
+    std::atexit([] { std::remove(temp_file().c_str()); });
+  }
+  return path;
+}
+
+inline bool write_file(const std::string& path, const uint8_t* data, size_t size) {
+  FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) return false;
+  const bool ok = std::fwrite(data, 1, size, f) == size;
+  return std::fclose(f) == 0 && ok;
+}
+
+inline void read_and_parameterize(const char* extension, const uint8_t* data, size_t size) {
+  const std::string& path = temp_path(extension);
+  if (!write_file(path, data, size)) std::abort();  // the harness itself failed
+  lowstretch::ToolMesh mesh;
+  std::string error;
+  if (!lowstretch::read_mesh(path, mesh, error)) {
+    if (error.empty()) std::abort();  // a refusal must say why
+    return;
+  }
+  Eigen::MatrixXd V;
+  Eigen::MatrixXi F;
+  const lowstretch::ArrayRows rows = lowstretch::mesh_to_arrays(mesh, V, F);
+  lowstretch::Options options;
+  options.max_passes = 2;
+  const lowstretch::Result result = lowstretch::parameterize(V, F, options);
+  if (result.error) {
+    if (lowstretch::message(result.error).empty()) std::abort();
+    return;
+  }
+  if (result.uv.rows() != V.rows() || result.face_stretch.size() != F.rows() || result.passes.empty()) std::abort();
+  lowstretch::write_parameterization(mesh, rows, result);
+}
+
+}  // namespace lowstretch_fuzz
