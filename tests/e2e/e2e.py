@@ -63,6 +63,7 @@ EXPECTED = {
     "tetrahedron": "closed",
     "octahedron": "closed",
     "three_holes": "3 boundary loops",
+    "point_cloud": "no faces",
 }
 TOOL_WEIGHTS = "floater"  # the .mlx scripts use the default initial weights
 

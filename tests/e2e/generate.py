@@ -51,6 +51,19 @@ def hemisphere(rings=12):
     return vertices, faces
 
 
+def grid_with_unused_vertices(n=16):
+    """The wavy grid with three vertices that no face uses (one far away), spread through the list."""
+    vertices, faces = wavy_grid(n)
+    extra = {5: (9.0, 9.0, 9.0), 40: (0.5, 0.5, 3.0), 100: (-7.0, 2.0, 0.0)}
+    new_index, out = [], []
+    for k, v in enumerate(vertices):
+        if k in extra:
+            out.append(extra[k])
+        new_index.append(len(out))
+        out.append(v)
+    return out, [tuple(new_index[i] for i in f) for f in faces]
+
+
 def two_components():
     """Not a disk: two separate wavy grids."""
     v1, f1 = wavy_grid(8)
@@ -86,6 +99,12 @@ def three_holes(n=20):
     return [vertices[i] for i in used], [tuple(new_index[i] for i in f) for f in faces]
 
 
+def point_cloud():
+    """Not a mesh: the wavy grid's vertices and no face."""
+    vertices, _ = wavy_grid(8)
+    return vertices, []
+
+
 def disk_with_flap(n=16, every=7):
     """The wavy grid plus a separate strip (a second component) whose vertices and faces are
     interleaved with the grid's. Returns (vertices, faces, quality): quality is 1 on the strip and
@@ -116,6 +135,6 @@ def disk_with_flap(n=16, every=7):
     return vertices, faces, quality
 
 
-DISKS = {"wavy_grid": wavy_grid, "hemisphere": hemisphere}
+DISKS = {"wavy_grid": wavy_grid, "hemisphere": hemisphere, "grid_with_unused_vertices": grid_with_unused_vertices}
 BAD = {"two_components": two_components, "tetrahedron": tetrahedron, "octahedron": octahedron,
-       "three_holes": three_holes}
+       "three_holes": three_holes, "point_cloud": point_cloud}
