@@ -63,6 +63,22 @@ Error boundary_positions(const DiskMesh& disk, BoundaryShape shape, Eigen::Matri
   return {};
 }
 
+// w_ij <- w_ij / sigma_j^eta, then each row rescaled to sum 1 (a row's scale does not change its
+// equation; this keeps the values near 1).
+void reweight(const DiskMesh& disk, const Eigen::VectorXd& sigma, double exponent, std::vector<double>& weights) {
+  for (int i = 0; i < int(disk.V.rows()); ++i) {
+    if (disk.is_boundary[size_t(i)]) continue;
+    const int begin = disk.ring_start[size_t(i)], end = disk.ring_start[size_t(i) + 1];
+    double sum = 0;
+    for (int s = begin; s < end; ++s) {
+      weights[size_t(s)] /= std::pow(sigma(disk.ring[size_t(s)]), exponent);
+      sum += weights[size_t(s)];
+    }
+    if (sum > 0)
+      for (int s = begin; s < end; ++s) weights[size_t(s)] /= sum;
+  }
+}
+
 Result failed(Error error) {
   Result result;
   result.error = std::move(error);
@@ -101,21 +117,7 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
     if (!report(0.05 + 0.9 * pass / (options.max_passes + 1.0), pass == 0 ? "initial parameterization" : "stretch pass"))
       return failed({ErrorCode::Cancelled, 0, ""});
     Clock::time_point phase = Clock::now();
-    if (pass > 0) {
-      // w_ij <- w_ij / sigma_j^eta with sigma from the previous pass, then each row rescaled to
-      // sum 1 (a row's scale does not change its equation; this keeps the values near 1).
-      const Eigen::VectorXd sigma = vertex_stretch(disk.F, n, stretch);
-      for (int i = 0; i < n; ++i) {
-        if (disk.is_boundary[size_t(i)]) continue;
-        double sum = 0;
-        for (int s = disk.ring_start[size_t(i)]; s < disk.ring_start[size_t(i) + 1]; ++s) {
-          weights[size_t(s)] /= std::pow(sigma(disk.ring[size_t(s)]), options.exponent);
-          sum += weights[size_t(s)];
-        }
-        if (sum > 0)
-          for (int s = disk.ring_start[size_t(i)]; s < disk.ring_start[size_t(i) + 1]; ++s) weights[size_t(s)] /= sum;
-      }
-    }
+    if (pass > 0) reweight(disk, vertex_stretch(disk.F, n, stretch), options.exponent, weights);
     const double reweighting = seconds_since(phase);
     if (!solver.solve(weights, boundary_uv, uv) || !uv.allFinite())
       return failed({ErrorCode::SolverFailed, pass, "singular or non-finite system"});
