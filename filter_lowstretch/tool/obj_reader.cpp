@@ -1,5 +1,7 @@
 #include "obj_reader.h"
 
+#include "mesh_counts.h"
+
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -41,12 +43,7 @@ bool read_obj(const std::string& path, ToolMesh& mesh, std::string& error) {
     }
   }
   if (points.empty()) { error = "no vertices"; return false; }
-  mesh.Clear();
-  auto vi = vcg::tri::Allocator<ToolMesh>::AddVertices(mesh, points.size());
-  for (size_t i = 0; i < points.size(); ++i, ++vi) vi->P() = points[i];
-  auto fi = vcg::tri::Allocator<ToolMesh>::AddFaces(mesh, corners.size() / 3);
-  for (size_t f = 0; f < corners.size() / 3; ++f, ++fi)
-    for (int k = 0; k < 3; ++k) fi->V(k) = &mesh.vert[size_t(corners[3 * f + size_t(k)])];
+  fill_tool_mesh(points, corners, mesh);
   return true;
 }
 
