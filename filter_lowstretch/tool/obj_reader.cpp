@@ -21,9 +21,16 @@ bool read_obj(const std::string& path, ToolMesh& mesh, std::string& error) {
     if (!(words >> word)) continue;
     const std::string where = "line " + std::to_string(number) + ": ";
     if (word == "v") {
-      double x, y, z;
-      if (!(words >> x >> y >> z)) { error = where + "a vertex needs three coordinates"; return false; }
-      points.emplace_back(x, y, z);
+      // strtod, not >>: "nan" and "inf" are read as such (the core names them if a face uses them).
+      double xyz[3];
+      for (double& c : xyz) {
+        char* end = nullptr;
+        if (!(words >> word) || (c = std::strtod(word.c_str(), &end), *end != '\0')) {
+          error = where + "a vertex needs three numbers";
+          return false;
+        }
+      }
+      points.emplace_back(xyz[0], xyz[1], xyz[2]);
     } else if (word == "f") {
       polygon.clear();
       while (words >> word) {

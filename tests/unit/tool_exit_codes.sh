@@ -60,6 +60,8 @@ MESH
 printf 'OFF\n99999999 5 0\n0 0 0\n' >"$work/huge.off"
 : >"$work/empty.off"
 printf 'v 0 0 0\nv 1 0 0\nf 1 2 7\n' >"$work/badindex.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv nan inf 1\nf 1 2 3\n' >"$work/unused_nan.obj"
+printf 'v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n' >"$work/used_nan.obj"
 
 check "good disk to PLY" 0 "$work/disk.off" -o "$work/out.ply" --svg "$work/uv.svg"
 [ -s "$work/out.ply" ] && [ -s "$work/uv.svg" ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL good disk: no PLY or SVG"; }
@@ -73,6 +75,8 @@ grep -q "2 connected components" "$work/stderr" && passed=$((passed + 1)) || { f
 check "huge header refused" 2 "$work/huge.off" -o "$work/out.ply"
 check "empty file refused" 2 "$work/empty.off" -o "$work/out.ply"
 check "bad OBJ index refused" 2 "$work/badindex.obj" -o "$work/out.ply"
+check "unused NaN vertex in OBJ ignored" 0 "$work/unused_nan.obj" -o "$work/out.ply"
+check "used NaN vertex in OBJ named" 3 "$work/used_nan.obj" -o "$work/out.ply"
 check "missing file" 2 "$work/nothing.off" -o "$work/out.ply"
 check "bad option" 1 "$work/disk.off" --boundary triangle -o "$work/out.ply"
 check "bad exponent" 3 "$work/disk.off" --exponent 2 -o "$work/out.ply"
