@@ -40,6 +40,13 @@ class Gui:
         if not display:
             raise RuntimeError("Xvfb did not start")
         self.env["DISPLAY"] = ":" + display
+        # Seen once under load: meshlab could not connect to the display Xvfb had just announced.
+        # Wait until the server answers a client before starting anything on it.
+        end = time.time() + 30
+        while subprocess.run(["xdpyinfo"], env=self.env, capture_output=True).returncode != 0:
+            if xvfb.poll() is not None or time.time() > end:
+                raise RuntimeError(f"Xvfb on :{display} does not answer (exit code {xvfb.poll()})")
+            time.sleep(0.2)
 
     def start(self, command, log_name):
         log = open(os.path.join(self.work, log_name), "w")
