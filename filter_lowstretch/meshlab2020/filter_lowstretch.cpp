@@ -26,21 +26,13 @@ int FilterLowStretchPlugin::postCondition(QAction*) const { return plugin::writt
 
 MeshFilterInterface::FILTER_ARITY FilterLowStretchPlugin::filterArity(QAction*) const { return SINGLE_MESH; }
 
-namespace {
-QStringList entries(const plugin::EnumParameter& p) {
-  QStringList list;
-  for (const char* entry : p.entries) list << entry;
-  return list;
-}
-}  // namespace
-
 void FilterLowStretchPlugin::initParameterSet(QAction*, MeshModel&, RichParameterList& parameters) {
   const plugin::Parameters& p = plugin::parameters();
-  parameters.addParam(RichEnum(p.boundary.name, p.boundary.default_index, entries(p.boundary), p.boundary.label,
+  parameters.addParam(RichEnum(p.boundary.name, p.boundary.default_index, plugin::entries(p.boundary), p.boundary.label,
                                p.boundary.tooltip));
   parameters.addParam(RichFloat(p.exponent.name, float(p.exponent.default_value), p.exponent.label, p.exponent.tooltip));
   parameters.addParam(RichInt(p.max_passes.name, p.max_passes.default_value, p.max_passes.label, p.max_passes.tooltip));
-  parameters.addParam(RichEnum(p.weights.name, p.weights.default_index, entries(p.weights), p.weights.label,
+  parameters.addParam(RichEnum(p.weights.name, p.weights.default_index, plugin::entries(p.weights), p.weights.label,
                                p.weights.tooltip));
 }
 

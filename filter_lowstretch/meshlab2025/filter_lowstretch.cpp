@@ -8,16 +8,6 @@
 
 namespace plugin = lowstretch::plugin;
 
-namespace {
-
-QStringList entries(const plugin::EnumParameter& p) {
-  QStringList list;
-  for (const char* entry : p.entries) list << entry;
-  return list;
-}
-
-}  // namespace
-
 FilterLowStretchPlugin::FilterLowStretchPlugin() {
   typeList = {FP_LOW_STRETCH};
   for (ActionIDType type : types()) actionList.push_back(new QAction(filterName(type), this));
@@ -47,12 +37,12 @@ FilterPlugin::FilterArity FilterLowStretchPlugin::filterArity(const QAction*) co
 RichParameterList FilterLowStretchPlugin::initParameterList(const QAction*, const MeshModel&) {
   const plugin::Parameters& p = plugin::parameters();
   RichParameterList parameters;
-  parameters.addParam(RichEnum(p.boundary.name, p.boundary.default_index, entries(p.boundary), p.boundary.label,
+  parameters.addParam(RichEnum(p.boundary.name, p.boundary.default_index, plugin::entries(p.boundary), p.boundary.label,
                                p.boundary.tooltip));
   parameters.addParam(
       RichFloat(p.exponent.name, Scalarm(p.exponent.default_value), p.exponent.label, p.exponent.tooltip));
   parameters.addParam(RichInt(p.max_passes.name, p.max_passes.default_value, p.max_passes.label, p.max_passes.tooltip));
-  parameters.addParam(RichEnum(p.weights.name, p.weights.default_index, entries(p.weights), p.weights.label,
+  parameters.addParam(RichEnum(p.weights.name, p.weights.default_index, plugin::entries(p.weights), p.weights.label,
                                p.weights.tooltip));
   return parameters;
 }

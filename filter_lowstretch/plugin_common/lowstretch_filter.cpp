@@ -89,6 +89,12 @@ const Parameters& parameters() {
   return p;
 }
 
+QStringList entries(const EnumParameter& p) {
+  QStringList list;
+  for (const char* entry : p.entries) list << entry;
+  return list;
+}
+
 Error make_options(int boundary, int weights, double exponent, int max_passes, Options& options) {
   const Parameters& p = parameters();
   if (boundary < 0 || boundary >= int(p.boundary.entries.size())) return invalid_enum(p.boundary, boundary);

@@ -6,6 +6,7 @@
 // Nothing here knows MeshModel or RichParameter; the mesh side is vcglib (mesh_arrays.h).
 #pragma once
 #include <QString>
+#include <QStringList>
 #include <algorithm>
 #include <exception>
 #include <functional>
@@ -52,6 +53,8 @@ struct Parameters {
   EnumParameter weights;
 };
 const Parameters& parameters();
+// An enum parameter's entries as MeshLab's RichEnum takes them.
+QStringList entries(const EnumParameter& p);
 
 // The core's options from the parameter values as MeshLab hands them over. On an invalid value
 // returns an InvalidOption error whose detail names the parameter by its label; options is then
