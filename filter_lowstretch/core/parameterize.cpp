@@ -108,6 +108,7 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
                            "triangles): uniform weights used there");
 
   LaplacianSolver solver(disk);
+  const SurfaceReference reference = surface_reference(disk);
   const int n = int(disk.V.rows());
   Eigen::MatrixXd uv, best_uv;
   FaceStretch stretch, best_stretch;
@@ -123,7 +124,7 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
       return failed({ErrorCode::SolverFailed, pass, "singular or non-finite system"});
     phase = Clock::now();
     stretch = face_stretch(disk.V, disk.F, uv);
-    PassMetrics metrics = measure(disk, uv, stretch);
+    PassMetrics metrics = measure(disk, uv, stretch, reference);
     metrics.pass = pass;
     metrics.seconds_metrics = seconds_since(phase);
     metrics.seconds_assembly = reweighting + solver.seconds_assembly;

@@ -7,7 +7,6 @@
 namespace lowstretch {
 
 namespace {
-double angle(const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
 const double kInf = std::numeric_limits<double>::infinity();
 }  // namespace
 
@@ -70,7 +69,29 @@ Eigen::VectorXd vertex_stretch(const Eigen::MatrixXi& F, int vertex_count, const
   return sigma;
 }
 
+SurfaceReference surface_reference(const DiskMesh& disk) {
+  SurfaceReference r;
+  const Eigen::Index ne = disk.edges.rows(), nf = disk.F.rows();
+  r.edge_length.resize(ne);
+  for (Eigen::Index e = 0; e < ne; ++e) {
+    r.edge_length(e) = (disk.V.row(disk.edges(e, 0)) - disk.V.row(disk.edges(e, 1))).norm();
+    r.total_edge_length += r.edge_length(e);
+  }
+  r.corner_angle.resize(nf, 3);
+  for (Eigen::Index f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int i = disk.F(f, k), j = disk.F(f, (k + 1) % 3), l = disk.F(f, (k + 2) % 3);
+      const Eigen::Vector3d a = (disk.V.row(j) - disk.V.row(i)).transpose(), b = (disk.V.row(l) - disk.V.row(i)).transpose();
+      r.corner_angle(f, k) = std::atan2(a.cross(b).norm(), a.dot(b));
+    }
+  return r;
+}
+
 PassMetrics measure(const DiskMesh& disk, const Eigen::MatrixXd& UV, const FaceStretch& s) {
+  return measure(disk, UV, s, surface_reference(disk));
+}
+
+PassMetrics measure(const DiskMesh& disk, const Eigen::MatrixXd& UV, const FaceStretch& s, const SurfaceReference& reference) {
   PassMetrics m;
   m.flipped = s.flipped;
   m.degenerate = s.degenerate;
@@ -85,24 +106,19 @@ PassMetrics measure(const DiskMesh& disk, const Eigen::MatrixXd& UV, const FaceS
     m.linf_stretch = s.normalization * s.gamma.maxCoeff();
   }
 
-  double length_3d = 0, length_uv = 0;
   const Eigen::Index ne = disk.edges.rows();
-  Eigen::VectorXd l3(ne), lu(ne);
-  for (Eigen::Index e = 0; e < ne; ++e) {
-    l3(e) = (disk.V.row(disk.edges(e, 0)) - disk.V.row(disk.edges(e, 1))).norm();
-    lu(e) = (UV.row(disk.edges(e, 0)) - UV.row(disk.edges(e, 1))).norm();
-    length_3d += l3(e);
-    length_uv += lu(e);
-  }
-  for (Eigen::Index e = 0; e < ne; ++e) m.edge_distortion += std::abs(l3(e) / length_3d - lu(e) / length_uv);
+  Eigen::VectorXd lu(ne);
+  for (Eigen::Index e = 0; e < ne; ++e) lu(e) = (UV.row(disk.edges(e, 0)) - UV.row(disk.edges(e, 1))).norm();
+  const double length_uv = lu.sum();
+  for (Eigen::Index e = 0; e < ne; ++e)
+    m.edge_distortion += std::abs(reference.edge_length(e) / reference.total_edge_length - lu(e) / length_uv);
 
   double angle_sum = 0;
   for (Eigen::Index f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k) {
       const int i = disk.F(f, k), j = disk.F(f, (k + 1) % 3), l = disk.F(f, (k + 2) % 3);
-      const Eigen::Vector3d a = (disk.V.row(j) - disk.V.row(i)).transpose(), b = (disk.V.row(l) - disk.V.row(i)).transpose();
-      const Eigen::Vector3d au(UV(j, 0) - UV(i, 0), UV(j, 1) - UV(i, 1), 0), bu(UV(l, 0) - UV(i, 0), UV(l, 1) - UV(i, 1), 0);
-      angle_sum += std::abs(angle(a, b) - angle(au, bu));
+      const double ax = UV(j, 0) - UV(i, 0), ay = UV(j, 1) - UV(i, 1), bx = UV(l, 0) - UV(i, 0), by = UV(l, 1) - UV(i, 1);
+      angle_sum += std::abs(reference.corner_angle(f, k) - std::atan2(std::abs(ax * by - ay * bx), ax * bx + ay * by));
     }
   m.angle_distortion = angle_sum / (3.0 * double(nf));
 

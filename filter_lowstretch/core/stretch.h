@@ -28,7 +28,17 @@ FaceStretch face_stretch(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, con
 // have zero 3D area gets the global L2 stretch.
 Eigen::VectorXd vertex_stretch(const Eigen::MatrixXi& F, int vertex_count, const FaceStretch& s);
 
+// The 3D side of the edge and angle metrics. It is the same in every pass, so the pass loop
+// computes it once.
+struct SurfaceReference {
+  Eigen::VectorXd edge_length;  // per row of disk.edges
+  double total_edge_length = 0;
+  Eigen::MatrixXd corner_angle;  // F x 3: the angle at corner k of face f
+};
+SurfaceReference surface_reference(const DiskMesh& disk);
+
 // The paper's metrics; stretch is infinite when a parameter triangle is flipped or degenerate.
-PassMetrics measure(const DiskMesh& disk, const Eigen::MatrixXd& UV, const FaceStretch& s);
+PassMetrics measure(const DiskMesh& disk, const Eigen::MatrixXd& UV, const FaceStretch& s, const SurfaceReference& reference);
+PassMetrics measure(const DiskMesh& disk, const Eigen::MatrixXd& UV, const FaceStretch& s);  // computes the reference
 
 }  // namespace lowstretch
