@@ -141,4 +141,20 @@ std::vector<double> initial_weights(const DiskMesh& disk, InitialWeights kind, i
   return all;
 }
 
+// w_ij <- w_ij / sigma_j^eta, then each row rescaled to sum 1 (a row's scale does not change its
+// equation; this keeps the values near 1).
+void reweight(const DiskMesh& disk, const Eigen::VectorXd& sigma, double exponent, std::vector<double>& weights) {
+  for (int i = 0; i < int(disk.V.rows()); ++i) {
+    if (disk.is_boundary[size_t(i)]) continue;
+    const int begin = disk.ring_start[size_t(i)], end = disk.ring_start[size_t(i) + 1];
+    double sum = 0;
+    for (int s = begin; s < end; ++s) {
+      weights[size_t(s)] /= std::pow(sigma(disk.ring[size_t(s)]), exponent);
+      sum += weights[size_t(s)];
+    }
+    if (sum > 0)
+      for (int s = begin; s < end; ++s) weights[size_t(s)] /= sum;
+  }
+}
+
 }  // namespace lowstretch

@@ -28,4 +28,8 @@ bool harmonic_weights(const Eigen::RowVector3d& p, const std::vector<Eigen::RowV
 // used so that every weight stays positive; `uniform_fallbacks` counts those vertices.
 std::vector<double> initial_weights(const DiskMesh& disk, InitialWeights kind, int& uniform_fallbacks);
 
+// One stretch pass: w_ij <- w_ij / sigma_j^exponent for every interior vertex i, with sigma the
+// per-vertex stretch of the previous pass; each row is then rescaled to sum 1.
+void reweight(const DiskMesh& disk, const Eigen::VectorXd& sigma, double exponent, std::vector<double>& weights);
+
 }  // namespace lowstretch
