@@ -118,20 +118,27 @@ CgalRun run_cgal(const DiskMesh& disk, Parameterize parameterize_with_cgal) {
 
 using Border = SMP::Square_border_arc_length_parameterizer_3<SurfaceMesh>;
 
-void report_cgal(const char* name, const CgalRun& r) {
+std::string report_cgal(const char* name, const CgalRun& r) {
   std::printf("  %-34s %8.3f s  L2 %8.4f  flips %d  zero-area %d%s\n", name, r.seconds, r.metrics.l2_stretch,
               r.metrics.flipped, r.metrics.degenerate, r.ok ? "" : "  (CGAL reported an error)");
+  char cell[96];
+  std::snprintf(cell, sizeof cell, "%.2f s, L2 %.3f, %d/%d", r.seconds, r.metrics.l2_stretch, r.metrics.flipped,
+                r.metrics.degenerate);
+  return cell;
 }
 
-void benchmark_mesh(const std::string& path, int runs, int passes, long cgal_max_vertices) {
+std::string base_name(const std::string& path) { return path.substr(path.find_last_of('/') + 1); }
+
+// Prints the mesh's report and returns its row of the summary table ("" if it could not run).
+std::string benchmark_mesh(const std::string& path, int runs, int passes, long cgal_max_vertices) {
   ToolMesh mesh;
   std::string error;
-  if (!read_mesh(path, mesh, error)) { std::printf("%s: %s\n", path.c_str(), error.c_str()); return; }
+  if (!read_mesh(path, mesh, error)) { std::printf("%s: %s\n", path.c_str(), error.c_str()); return ""; }
   Eigen::MatrixXd V;
   Eigen::MatrixXi F;
   mesh_to_arrays(mesh, V, F);
   DiskMesh disk;
-  if (Error e = make_disk_mesh(V, F, disk)) { std::printf("%s: %s\n", path.c_str(), message(e).c_str()); return; }
+  if (Error e = make_disk_mesh(V, F, disk)) { std::printf("%s: %s\n", path.c_str(), message(e).c_str()); return ""; }
   long interior = 0;
   for (char b : disk.is_boundary) interior += !b;
   std::printf("%s: %ld vertices, %ld interior rows, %ld faces\n", path.c_str(), long(V.rows()), interior, long(F.rows()));
@@ -140,6 +147,8 @@ void benchmark_mesh(const std::string& path, int runs, int passes, long cgal_max
   const double cholmod = cholmod_factorization_seconds(disk, runs, analyze);
   std::printf("  CHOLMOD supernodal LLT of the pattern: analyze %.3f s, factorize %.3f s (median of %d)\n", analyze, cholmod, runs);
 
+  double total_stop = 0, total_forced = 0;
+  Result stop_rule;
   for (bool forced : {false, true}) {
     Options o;
     o.max_passes = passes;
@@ -149,7 +158,7 @@ void benchmark_mesh(const std::string& path, int runs, int passes, long cgal_max
     Result r;
     for (int k = 0; k < runs; ++k) {
       r = parameterize(V, F, o);
-      if (r.error) { std::printf("  %s\n", message(r.error).c_str()); return; }
+      if (r.error) { std::printf("  %s\n", message(r.error).c_str()); return ""; }
       totals.push_back(r.seconds_total);
       all.push_back(r.passes);
     }
@@ -157,7 +166,9 @@ void benchmark_mesh(const std::string& path, int runs, int passes, long cgal_max
     std::printf("  ours, max passes %d%s: %.3f s total (median of %d), %zu solves, kept pass %d, L2 %.4f, flips %d; %.2f x CHOLMOD\n",
                 passes, forced ? " forced" : " with the stop rule", total, runs, r.passes.size(), r.chosen_pass,
                 r.passes[size_t(r.chosen_pass)].l2_stretch, r.passes[size_t(r.chosen_pass)].flipped, total / cholmod);
+    (forced ? total_forced : total_stop) = total;
     if (forced) continue;
+    stop_rule = r;
     std::printf("    pass  assembly  factorize   solve  metrics    total   L2 stretch\n");
     for (size_t p = 0; p < r.passes.size(); ++p) {
       std::vector<double> a, f, s, m, t;
@@ -174,18 +185,27 @@ void benchmark_mesh(const std::string& path, int runs, int passes, long cgal_max
     }
   }
 
+  std::string mean_value = "skipped", authalic = "skipped";
   if (V.rows() > cgal_max_vertices) {
     std::printf("  CGAL skipped above %ld vertices (it takes minutes)\n", cgal_max_vertices);
   } else {
-    report_cgal("CGAL Mean_value_coordinates (square)", run_cgal(disk, [](SurfaceMesh& sm, auto border, auto uv) {
+    mean_value = report_cgal("CGAL Mean_value_coordinates (square)", run_cgal(disk, [](SurfaceMesh& sm, auto border, auto uv) {
                   return SMP::parameterize(sm, SMP::Mean_value_coordinates_parameterizer_3<SurfaceMesh, Border>(), border, uv);
                 }));
-    report_cgal("CGAL Iterative_authalic (square)", run_cgal(disk, [](SurfaceMesh& sm, auto border, auto uv) {
+    authalic = report_cgal("CGAL Iterative_authalic (square)", run_cgal(disk, [](SurfaceMesh& sm, auto border, auto uv) {
                   SMP::Iterative_authalic_parameterizer_3<SurfaceMesh, Border> iterative;
                   return iterative.parameterize(sm, border, uv, 15u);
                 }));
   }
-  std::printf("  peak memory %.0f MB\n", peak_rss_mb());
+  const double peak = peak_rss_mb();
+  std::printf("  peak memory %.0f MB\n", peak);
+  const PassMetrics& kept = stop_rule.passes[size_t(stop_rule.chosen_pass)];
+  char row[512];
+  std::snprintf(row, sizeof row, "| %s | %ld | %zu (%d) | %.3f | %.3f | %.3f | %.1f | %.3f | %d | %.0f | %s | %s |",
+                base_name(path).c_str(), long(V.rows()), stop_rule.passes.size(), stop_rule.chosen_pass, total_stop,
+                total_forced, cholmod, total_forced / cholmod, kept.l2_stretch, kept.flipped, peak, mean_value.c_str(),
+                authalic.c_str());
+  return row;
 }
 
 }  // namespace
@@ -205,17 +225,33 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: lowstretch_benchmark [--runs N] [--passes N] [--cgal-max-vertices N] MESH...\n");
     return 1;
   }
-  // One child process per mesh, so that the peak memory it reports is that mesh's alone.
+  // One child process per mesh, so that the peak memory it reports is that mesh's alone; the
+  // child sends its summary row back through a pipe.
+  std::vector<std::string> rows;
   for (const std::string& m : meshes) {
     std::fflush(stdout);
+    int channel[2];
+    if (pipe(channel) != 0) return 1;
     const pid_t child = fork();
     if (child == 0) {
-      benchmark_mesh(m, runs, passes, cgal_max_vertices);
+      close(channel[0]);
+      const std::string row = benchmark_mesh(m, runs, passes, cgal_max_vertices);
       std::fflush(stdout);
+      if (write(channel[1], row.data(), row.size()) < 0) _exit(1);
       _exit(0);
     }
+    close(channel[1]);
+    std::string row;
+    char buffer[256];
+    for (ssize_t got; (got = read(channel[0], buffer, sizeof buffer)) > 0;) row.append(buffer, size_t(got));
+    close(channel[0]);
     int status = 0;
     waitpid(child, &status, 0);
+    if (!row.empty()) rows.push_back(row);
   }
+  std::printf("\nSummary (seconds are medians of %d runs; CGAL cells: seconds, L2 stretch, flipped/zero-area):\n\n", runs);
+  std::printf("| mesh | V | solves (kept) | ours, stop rule | ours, %d passes forced | CHOLMOD | forced / CHOLMOD | L2 | flips | peak MB | CGAL mean value | CGAL iterative authalic |\n", passes);
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const std::string& row : rows) std::printf("%s\n", row.c_str());
   return 0;
 }
