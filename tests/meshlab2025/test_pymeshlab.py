@@ -27,7 +27,7 @@ PYMESHLAB = "pymeshlab==2025.7.post1"
 NAME = "compute_texcoord_parametrization_low_stretch"
 KEYS = {"l2_stretch": float, "linf_stretch": float, "edge_distortion": float, "angle_distortion": float,
         "area_distortion": float, "flipped": int, "degenerate": int, "kept_pass": int, "passes": int,
-        "initial_l2_stretch": float, "seconds": float}
+        "initial_l2_stretch": float, "seconds": float, "charts": int, "seam_length": float, "coverage": float}
 
 
 class Checks:
