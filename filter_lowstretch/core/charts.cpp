@@ -67,8 +67,11 @@ struct ChartMesh {
   double seam_length = 0;       // in unit-box lengths
 };
 
-Error make_chart_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const std::vector<int>& faces, ChartMesh& chart) {
-  std::vector<int> local_of(size_t(V.rows()), -1), input_vertex;
+// local_of: -1 for every vertex, and left so (one array for all components keeps many small
+// components linear in time).
+Error make_chart_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const std::vector<int>& faces,
+                      std::vector<int>& local_of, ChartMesh& chart) {
+  std::vector<int> input_vertex;
   Eigen::MatrixXi local_F(Eigen::Index(faces.size()), 3);
   for (size_t j = 0; j < faces.size(); ++j)
     for (int k = 0; k < 3; ++k) {
@@ -80,7 +83,10 @@ Error make_chart_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
       local_F(Eigen::Index(j), k) = l;
     }
   Eigen::MatrixXd local_V(Eigen::Index(input_vertex.size()), 3);
-  for (size_t i = 0; i < input_vertex.size(); ++i) local_V.row(Eigen::Index(i)) = V.row(input_vertex[i]);
+  for (size_t i = 0; i < input_vertex.size(); ++i) {
+    local_V.row(Eigen::Index(i)) = V.row(input_vertex[i]);
+    local_of[size_t(input_vertex[i])] = -1;
+  }
 
   DiskMesh check;
   const Error e = make_disk_mesh(local_V, local_F, check);
@@ -195,9 +201,10 @@ ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi
   const Eigen::MatrixXd unit_V = unit_box(V, F, unit);
   ChartsResult result;
   std::vector<SolvedChart> solved;
+  std::vector<int> local_of(static_cast<size_t>(V.rows()), -1);
   for (int c = 0; c < count; ++c) {
     ChartMesh mesh;
-    if (Error e = make_chart_mesh(unit_V, F, faces_of[size_t(c)], mesh)) return failed(e);
+    if (Error e = make_chart_mesh(unit_V, F, faces_of[size_t(c)], local_of, mesh)) return failed(e);
     Options chart_options = options.disk;
     if (options.disk.progress)
       chart_options.progress = [&options, c, count](double fraction, const char* stage) {
