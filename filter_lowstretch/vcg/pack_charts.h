@@ -33,11 +33,16 @@ inline bool pack_charts_with_vcglib(const std::vector<Eigen::AlignedBox2d>& boxe
   const vcg::Point2i grid(1024, 1024);  // the integer container the rectangles are placed in
   std::vector<vcg::Similarity2f> transforms, attempt;
   vcg::Point2f covered;
-  float occupancy = 0.1f;
-  for (int tries = 0; tries < 24 && vcg::RectPacker<float>::PackOccupancy(rectangles, grid, occupancy, attempt, covered);
-       ++tries) {
-    transforms = attempt;
-    occupancy = (2 * occupancy + 1) / 3;
+  // Then the step that failed is halved a few times: a denser packing often still fits.
+  float packed = 0, occupancy = 0.1f, failed = 1;
+  for (int tries = 0; tries < 40 && failed - packed > 1e-3f; ++tries) {
+    if (vcg::RectPacker<float>::PackOccupancy(rectangles, grid, occupancy, attempt, covered)) {
+      transforms = attempt;
+      packed = occupancy;
+    } else {
+      failed = occupancy;
+    }
+    occupancy = failed < 1 ? (packed + failed) / 2 : (2 * packed + 1) / 3;
   }
   if (transforms.size() != boxes.size()) return false;
   for (const vcg::Similarity2f& t : transforms) {
