@@ -128,6 +128,25 @@ Mesh punched_grid(int n, const std::vector<Eigen::RowVector2d>& centres, double 
   return m;
 }
 
+Mesh double_torus() {
+  const Mesh t = torus(16, 8);
+  Mesh m;
+  const Eigen::Index nv = t.V.rows(), nf = t.F.rows();
+  m.V.resize(2 * nv, 3);
+  m.V << t.V, (t.V.rowwise() + Eigen::RowVector3d(8, 0, 0));
+  m.F.resize(2 * (nf - 1) + 6, 3);
+  m.F << t.F.bottomRows(nf - 1), (t.F.bottomRows(nf - 1).array() + int(nv)).matrix(), Eigen::MatrixXi::Zero(6, 3);
+  // Each hole's loop runs against its removed face (a, b, c): a -> c -> b.
+  const int p[3] = {t.F(0, 0), t.F(0, 2), t.F(0, 1)};
+  const int q[3] = {t.F(0, 0) + int(nv), t.F(0, 2) + int(nv), t.F(0, 1) + int(nv)};
+  for (int i = 0; i < 3; ++i) {
+    const int k = (3 - i) % 3, k_next = (3 - i - 1 + 3) % 3;
+    m.F.row(2 * (nf - 1) + 2 * i) << p[(i + 1) % 3], p[i], q[k];
+    m.F.row(2 * (nf - 1) + 2 * i + 1) << p[(i + 1) % 3], q[k], q[k_next];
+  }
+  return m;
+}
+
 Mesh without_face(const Mesh& mesh, int face) {
   Mesh m = mesh;
   m.F.resize(mesh.F.rows() - 1, 3);

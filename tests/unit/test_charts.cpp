@@ -163,28 +163,8 @@ TEST(Charts, PuncturedTorusWithAHole) {
   EXPECT_GT(r.seam_length, 0.0);
 }
 
-// Two tori, each without one face, joined by a three-sided tube between the two holes: closed, genus 2.
-testmesh::Mesh double_torus() {
-  const testmesh::Mesh t = testmesh::torus(16, 8);
-  testmesh::Mesh m;
-  const Eigen::Index nv = t.V.rows(), nf = t.F.rows();
-  m.V.resize(2 * nv, 3);
-  m.V << t.V, (t.V.rowwise() + Eigen::RowVector3d(8, 0, 0));
-  m.F.resize(2 * (nf - 1) + 6, 3);
-  m.F << t.F.bottomRows(nf - 1), (t.F.bottomRows(nf - 1).array() + int(nv)).matrix(), Eigen::MatrixXi::Zero(6, 3);
-  // Each hole's loop runs against its removed face (a, b, c): a -> c -> b.
-  const int p[3] = {t.F(0, 0), t.F(0, 2), t.F(0, 1)};
-  const int q[3] = {t.F(0, 0) + int(nv), t.F(0, 2) + int(nv), t.F(0, 1) + int(nv)};
-  for (int i = 0; i < 3; ++i) {
-    const int k = (3 - i) % 3, k_next = (3 - i - 1 + 3) % 3;
-    m.F.row(2 * (nf - 1) + 2 * i) << p[(i + 1) % 3], p[i], q[k];
-    m.F.row(2 * (nf - 1) + 2 * i + 1) << p[(i + 1) % 3], q[k], q[k_next];
-  }
-  return m;
-}
-
 TEST(Charts, GenusTwoIsCutOpen) {
-  const testmesh::Mesh m = double_torus();
+  const testmesh::Mesh m = testmesh::double_torus();
   const long long euler = m.V.rows() - 3 * m.F.rows() / 2 + m.F.rows();
   ASSERT_EQ(euler, -2);                                                  // closed genus 2 ...
   ASSERT_EQ(parameterize(m.V, m.F).error.code, ErrorCode::Closed);      // ... manifold and oriented
