@@ -5,6 +5,9 @@ namespace lowstretch {
 namespace {
 std::string n(long long v) { return std::to_string(v); }
 std::string plural(long long v, const char* one, const char* many) { return n(v) + " " + (v == 1 ? one : many); }
+// The way out for the four topology problems that charts solve (charts.h).
+const char* const kChartsHint =
+    "choose charts for non-disk input (lowstretch --non-disk charts; filter parameter \"Non-disk input\": Make charts)";
 }  // namespace
 
 std::string message(const Error& e) {
@@ -31,13 +34,15 @@ std::string message(const Error& e) {
       return plural(e.count, "non-manifold vertex", "non-manifold vertices") +
              " (several fans of faces meet there): split non-manifold vertices first";
     case ErrorCode::SeveralComponents:
-      return "the mesh has " + n(e.count) +
-             " connected components; a disk has exactly 1: keep one component or split the mesh";
-    case ErrorCode::Closed: return "the mesh is closed (no boundary): cut it open into a disk first";
+      return "the mesh has " + n(e.count) + " connected components; a disk has exactly 1: keep one component, or " +
+             kChartsHint;
+    case ErrorCode::Closed: return std::string("the mesh is closed (no boundary): cut it open into a disk, or ") + kChartsHint;
     case ErrorCode::SeveralBoundaryLoops:
-      return "the mesh has " + n(e.count) + " boundary loops; a disk has exactly 1: close the holes or cut the mesh";
+      return "the mesh has " + n(e.count) + " boundary loops; a disk has exactly 1: close the holes or cut the mesh, or " +
+             kChartsHint;
     case ErrorCode::NotGenusZero:
-      return "the mesh has genus " + n(e.count) + " with one boundary loop; a disk has genus 0: cut the handles open first";
+      return "the mesh has genus " + n(e.count) + " with one boundary loop; a disk has genus 0: cut the handles open, or " +
+             kChartsHint;
     case ErrorCode::ZeroAreaMesh:
       return "all " + plural(e.count, "face has", "faces have") + " zero area: there is no surface to parameterize";
     case ErrorCode::InvalidOption: return "invalid option: " + e.detail;

@@ -34,6 +34,8 @@ void FilterLowStretchPlugin::initParameterSet(QAction*, MeshModel&, RichParamete
   parameters.addParam(RichInt(p.max_passes.name, p.max_passes.default_value, p.max_passes.label, p.max_passes.tooltip));
   parameters.addParam(RichEnum(p.weights.name, p.weights.default_index, plugin::entries(p.weights), p.weights.label,
                                p.weights.tooltip));
+  parameters.addParam(RichEnum(p.non_disk.name, p.non_disk.default_index, plugin::entries(p.non_disk), p.non_disk.label,
+                               p.non_disk.tooltip));
 }
 
 bool FilterLowStretchPlugin::fail(const std::string& message) {
@@ -48,18 +50,19 @@ bool FilterLowStretchPlugin::applyFilter(QAction*, MeshDocument& md, const RichP
   MeshModel& m = *md.mm();
 
   const plugin::Parameters& p = plugin::parameters();
-  lowstretch::Options options;
+  lowstretch::ChartOptions options;
   const lowstretch::Error invalid =
       plugin::make_options(parameters.getEnum(p.boundary.name), parameters.getEnum(p.weights.name),
-                           parameters.getFloat(p.exponent.name), parameters.getInt(p.max_passes.name), options);
+                           parameters.getFloat(p.exponent.name), parameters.getInt(p.max_passes.name),
+                           parameters.getEnum(p.non_disk.name), options);
   if (invalid) return fail(lowstretch::message(invalid));
-  options.progress = plugin::progress(cb);
+  options.disk.progress = plugin::progress(cb);
 
   const plugin::Run run = plugin::run(m.cm, options, [this](const std::string& line) { Log(line); });
   if (!run.error.empty()) return fail(run.error);
 
   m.updateDataMask(plugin::written_data_mask<MeshModel>());
-  lowstretch::write_parameterization(m.cm, run.rows, run.result);
+  plugin::write_result(m.cm, run);
   const QString texture = plugin::checkerboard_path();
   m.cm.textures.clear();  // every wedge now refers to texture 0
   if (texture.isEmpty())

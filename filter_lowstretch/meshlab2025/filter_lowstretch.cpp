@@ -44,6 +44,8 @@ RichParameterList FilterLowStretchPlugin::initParameterList(const QAction*, cons
   parameters.addParam(RichInt(p.max_passes.name, p.max_passes.default_value, p.max_passes.label, p.max_passes.tooltip));
   parameters.addParam(RichEnum(p.weights.name, p.weights.default_index, plugin::entries(p.weights), p.weights.label,
                                p.weights.tooltip));
+  parameters.addParam(RichEnum(p.non_disk.name, p.non_disk.default_index, plugin::entries(p.non_disk), p.non_disk.label,
+                               p.non_disk.tooltip));
   return parameters;
 }
 
@@ -59,19 +61,20 @@ std::map<std::string, QVariant> FilterLowStretchPlugin::applyFilter(const QActio
   MeshModel& m = *md.mm();
 
   const plugin::Parameters& p = plugin::parameters();
-  lowstretch::Options options;
+  lowstretch::ChartOptions options;
   const lowstretch::Error invalid =
       plugin::make_options(parameters.getEnum(p.boundary.name), parameters.getEnum(p.weights.name),
-                           parameters.getFloat(p.exponent.name), parameters.getInt(p.max_passes.name), options);
+                           parameters.getFloat(p.exponent.name), parameters.getInt(p.max_passes.name),
+                           parameters.getEnum(p.non_disk.name), options);
   if (invalid) fail(lowstretch::message(invalid));
-  options.progress = plugin::progress(cb);
+  options.disk.progress = plugin::progress(cb);
 
   const plugin::Run run = plugin::run(m.cm, options, [this](const std::string& line) { log(line); });
   if (!run.error.empty()) fail(run.error);
 
   const int written = plugin::written_data_mask<MeshModel>();
   m.updateDataMask(written);
-  lowstretch::write_parameterization(m.cm, run.rows, run.result);
+  plugin::write_result(m.cm, run);
   // Every wedge now refers to texture 0. MeshLab 2022+ keeps the image with the mesh and saves it
   // next to the mesh file under the texture's name.
   m.clearTextures();

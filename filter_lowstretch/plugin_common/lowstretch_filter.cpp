@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 
 #include <QFileInfo>
+#include <cmath>
 #include <cstdarg>
 #include <cstdio>
 
@@ -14,15 +15,20 @@ const char* const kPythonName = "compute_texcoord_parametrization_low_stretch";
 const char* const kPluginName = "FilterLowStretch";
 const char* const kFilterInfo =
     "Computes a low-stretch parameterization of a mesh that is a topological disk (connected, "
-    "manifold, one boundary loop): the boundary is mapped to a square, a circle or a free "
+    "manifold, one boundary loop), or with <i>Non-disk input: Make charts</i> of any manifold, "
+    "oriented mesh: each connected component becomes a disk chart (holes other than the longest "
+    "boundary are closed virtually for the solve and stay holes; closed or higher-genus parts are "
+    "cut open along short seams), and the charts are scaled by their 3D area and packed into the "
+    "unit square. For a disk the boundary is mapped to a square, a circle or a free "
     "(natural) boundary, the interior starts from Floater's shape-preserving map, and each "
     "pass divides the weights by the vertex stretch and solves again, keeping the pass of "
     "lowest L2 stretch.<br>"
     "Writes per-wedge and per-vertex texture coordinates in [0,1]<sup>2</sup> (texture 0, a "
     "checkerboard), per-vertex quality = vertex stretch and per-face quality = triangle "
     "stretch (use <i>Colorize by vertex/face quality</i> to see where the map stretches). "
-    "The log lists the stretch and distortion of every pass. A mesh that is not a disk is "
-    "left unchanged and the reason is reported.<br><br>"
+    "The log lists the stretch and distortion of every pass (for charts, of every chart and of the "
+    "whole layout, with the seam length and the fraction of the square covered). A mesh that "
+    "cannot be parameterized is left unchanged and the reason is reported.<br><br>"
     "See: <i>Shin Yoshizawa, Alexander Belyaev, Hans-Peter Seidel</i><br>"
     "<b>\"A fast and simple stretch-minimizing mesh parameterization\"</b><br>"
     "Shape Modeling International 2004, pages 200-208.";
@@ -32,6 +38,7 @@ namespace {
 // The enum entries follow the core's enum order.
 const BoundaryShape kBoundaryValues[] = {BoundaryShape::Square, BoundaryShape::Circle, BoundaryShape::Natural};
 const InitialWeights kWeightsValues[] = {InitialWeights::Floater, InitialWeights::MeanValue, InitialWeights::Harmonic};
+const NonDisk kNonDiskValues[] = {NonDisk::Reject, NonDisk::Charts};
 
 Parameters make_parameters() {
   const Options defaults;
@@ -52,6 +59,12 @@ Parameters make_parameters() {
                     "Weights of the initial map U0: Floater's shape-preserving weights (the "
                     "paper's choice), mean value weights, or harmonic (cotangent) weights, "
                     "which can be negative and are offered for comparison only."},
+      EnumParameter{"nonDisk", 0, {"Reject", "Make charts"}, "Non-disk input",
+                    "What to do with a mesh that is not a disk (holes, closed, handles, several "
+                    "parts): reject it with the reason, or make charts: every part becomes one "
+                    "disk chart (holes closed virtually, closed or higher-genus parts cut along "
+                    "short seams), parameterized the same way and packed into the unit square. "
+                    "Non-manifold or inconsistently oriented meshes are rejected either way."},
   };
 }
 
@@ -95,28 +108,34 @@ QStringList entries(const EnumParameter& p) {
   return list;
 }
 
-Error make_options(int boundary, int weights, double exponent, int max_passes, Options& options) {
+Error make_options(int boundary, int weights, double exponent, int max_passes, int non_disk, ChartOptions& charts) {
   const Parameters& p = parameters();
   if (boundary < 0 || boundary >= int(p.boundary.entries.size())) return invalid_enum(p.boundary, boundary);
   if (weights < 0 || weights >= int(p.weights.entries.size())) return invalid_enum(p.weights, weights);
+  if (non_disk < 0 || non_disk >= int(p.non_disk.entries.size())) return invalid_enum(p.non_disk, non_disk);
   if (!(exponent > 0 && exponent <= 1))
     return invalid(std::string(p.exponent.label) + " must be in (0, 1], got " + format("%g", exponent));
   if (max_passes < 0)
     return invalid(std::string(p.max_passes.label) + " must be 0 or more, got " + std::to_string(max_passes));
+  Options& options = charts.disk;
   options.boundary = kBoundaryValues[boundary];
   options.weights = kWeightsValues[weights];
   options.exponent = exponent;
   options.max_passes = max_passes;
+  charts.non_disk = kNonDiskValues[non_disk];
   return {};
 }
 
-std::string header_line(int vertices, int faces, const Options& options) {
-  return format("%s: %d vertices, %d faces; boundary %s, initial weights %s, exponent %g, max passes %d", kFilterName,
-                vertices, faces, to_string(options.boundary), to_string(options.weights), options.exponent,
-                options.max_passes);
+std::string header_line(int vertices, int faces, const ChartOptions& charts) {
+  const Options& options = charts.disk;
+  return format("%s: %d vertices, %d faces; boundary %s, initial weights %s, exponent %g, max passes %d, non-disk input %s",
+                kFilterName, vertices, faces, to_string(options.boundary), to_string(options.weights), options.exponent,
+                options.max_passes, to_string(charts.non_disk));
 }
 
-std::vector<std::string> result_lines(const Result& result) {
+namespace {
+
+std::vector<std::string> disk_lines(const Result& result) {
   std::vector<std::string> lines;
   for (const PassMetrics& p : result.passes)
     lines.push_back(format("pass %d: L2 stretch %.6g, Linf stretch %.6g, edge distortion %.6g, angle distortion %.6g, "
@@ -130,13 +149,65 @@ std::vector<std::string> result_lines(const Result& result) {
   return lines;
 }
 
+std::vector<std::string> chart_lines(const ChartsResult& result) {
+  std::vector<std::string> lines;
+  const size_t shown = 20;  // a mesh of many parts would flood the log
+  for (size_t i = 0; i < result.charts.size() && i < shown; ++i) {
+    const Chart& c = result.charts[i];
+    lines.push_back(format("chart %zu: %d faces, %d holes closed, seam length %.6g, L2 stretch %.6g, kept pass %d of %d",
+                           i, c.faces, c.closed_holes, c.seam_length, c.l2_stretch, c.chosen_pass, c.passes - 1));
+  }
+  if (result.charts.size() > shown) lines.push_back(format("... and %zu more charts", result.charts.size() - shown));
+  const PassMetrics& p = result.layout;
+  lines.push_back(format("%zu charts, seam length %.6g, coverage %.4f; whole layout: L2 stretch %.6g, Linf stretch %.6g, "
+                         "edge distortion %.6g, angle distortion %.6g, area distortion %.6g, flipped %d, degenerate %d; "
+                         "total %.3f s",
+                         result.charts.size(), result.seam_length, result.coverage, p.l2_stretch, p.linf_stretch,
+                         p.edge_distortion, p.angle_distortion, p.area_distortion, p.flipped, p.degenerate,
+                         result.seconds_total));
+  for (const std::string& note : result.notes) lines.push_back("note: " + note);
+  return lines;
+}
+
+}  // namespace
+
+std::vector<std::string> result_lines(const ChartsResult& result) {
+  return result.input_is_disk ? disk_lines(result.disk) : chart_lines(result);
+}
+
 std::string failure_line(const std::string& message) { return std::string(kFilterName) + " failed: " + message; }
 
-std::vector<OutputValue> output_values(const Result& result) {
-  const PassMetrics& kept = result.passes.at(size_t(result.chosen_pass));
+std::vector<OutputValue> output_values(const ChartsResult& charts) {
   auto real = [](const char* name, double value) { return OutputValue{name, false, 0, value}; };
   auto integer = [](const char* name, int value) { return OutputValue{name, true, value, double(value)}; };
-  return {
+  const std::vector<OutputValue> chart_values = {
+      integer("charts", int(charts.charts.size())),
+      real("seam_length", charts.seam_length),
+      real("coverage", charts.coverage),
+  };
+  if (!charts.input_is_disk) {
+    const PassMetrics& p = charts.layout;
+    int passes = 0;
+    for (const Chart& c : charts.charts) passes += c.passes;
+    std::vector<OutputValue> values = {
+        real("l2_stretch", p.l2_stretch),
+        real("linf_stretch", p.linf_stretch),
+        real("edge_distortion", p.edge_distortion),
+        real("angle_distortion", p.angle_distortion),
+        real("area_distortion", p.area_distortion),
+        integer("flipped", p.flipped),
+        integer("degenerate", p.degenerate),
+        integer("kept_pass", -1),  // each chart kept its own
+        integer("passes", passes),
+        real("initial_l2_stretch", std::nan("")),
+        real("seconds", charts.seconds_total),
+    };
+    values.insert(values.end(), chart_values.begin(), chart_values.end());
+    return values;
+  }
+  const Result& result = charts.disk;
+  const PassMetrics& kept = result.passes.at(size_t(result.chosen_pass));
+  std::vector<OutputValue> values = {
       real("l2_stretch", kept.l2_stretch),
       real("linf_stretch", kept.linf_stretch),
       real("edge_distortion", kept.edge_distortion),
@@ -149,6 +220,8 @@ std::vector<OutputValue> output_values(const Result& result) {
       real("initial_l2_stretch", result.passes.front().l2_stretch),
       real("seconds", result.seconds_total),
   };
+  values.insert(values.end(), chart_values.begin(), chart_values.end());
+  return values;
 }
 
 QString checkerboard_path() {

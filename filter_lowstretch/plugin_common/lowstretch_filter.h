@@ -13,9 +13,11 @@
 #include <string>
 #include <vector>
 
+#include "filter_lowstretch/core/charts.h"
 #include "filter_lowstretch/core/error.h"
 #include "filter_lowstretch/core/parameterize.h"
 #include "filter_lowstretch/vcg/mesh_arrays.h"
+#include "filter_lowstretch/vcg/pack_charts.h"
 
 namespace lowstretch {
 namespace plugin {
@@ -45,12 +47,13 @@ struct IntParameter {
   const char* label;
   const char* tooltip;
 };
-// The filter's four parameters, in the order the dialog lists them.
+// The filter's five parameters, in the order the dialog lists them.
 struct Parameters {
   EnumParameter boundary;
   FloatParameter exponent;
   IntParameter max_passes;
   EnumParameter weights;
+  EnumParameter non_disk;
 };
 const Parameters& parameters();
 // An enum parameter's entries as MeshLab's RichEnum takes them.
@@ -59,7 +62,7 @@ QStringList entries(const EnumParameter& p);
 // The core's options from the parameter values as MeshLab hands them over. On an invalid value
 // returns an InvalidOption error whose detail names the parameter by its label; options is then
 // left as it was.
-Error make_options(int boundary, int weights, double exponent, int max_passes, Options& options);
+Error make_options(int boundary, int weights, double exponent, int max_passes, int non_disk, ChartOptions& options);
 
 // Maps MeshLab's progress callback (percent, stage; false cancels) to the core's.
 template <class CallBack>
@@ -70,37 +73,40 @@ std::function<bool(double, const char*)> progress(CallBack* cb) {
 }
 
 // Log lines, exactly as both adapters write them.
-std::string header_line(int vertices, int faces, const Options& options);
-std::vector<std::string> result_lines(const Result& result);  // every pass, the kept pass, notes
+std::string header_line(int vertices, int faces, const ChartOptions& options);
+// A disk: every pass, the kept pass, notes. Charts: each chart, then the charts, seams, coverage
+// and the metrics of the whole layout.
+std::vector<std::string> result_lines(const ChartsResult& result);
 std::string failure_line(const std::string& message);           // "<filter name> failed: <message>"
 
-// The filter's output values (pymeshlab returns them as a dict): metrics of the kept pass.
+// The filter's output values (pymeshlab returns them as a dict): metrics of the kept pass (of the
+// whole layout for charts; kept_pass is then -1 and passes counts those of every chart), charts,
+// seam length and coverage.
 struct OutputValue {
   std::string name;
   bool is_int;
   int int_value;
   double real_value;
 };
-std::vector<OutputValue> output_values(const Result& result);
+std::vector<OutputValue> output_values(const ChartsResult& result);
 
 // One run on a vcglib mesh: logs the header, converts the live elements, runs the core, logs the
 // result. `error` is empty on success, else the message for the user; the mesh is not touched
-// either way (the adapter writes the result with write_parameterization after enabling the
-// components).
+// either way (the adapter writes the result with write_result after enabling the components).
 struct Run {
   std::string error;
   ArrayRows rows;
-  Result result;
+  ChartsResult result;
 };
 template <class MeshType>
-Run run(const MeshType& m, const Options& options, const std::function<void(const std::string&)>& log) {
+Run run(const MeshType& m, const ChartOptions& options, const std::function<void(const std::string&)>& log) {
   log(header_line(m.vn, m.fn, options));
   Eigen::MatrixXd V;
   Eigen::MatrixXi F;
   Run run;
   run.rows = mesh_to_arrays(m, V, F);
   try {
-    run.result = parameterize(V, F, options);
+    run.result = parameterize_charts(V, F, options, pack_charts_with_vcglib);
   } catch (const std::exception& e) {  // e.g. std::bad_alloc: never let it reach MeshLab's event loop
     run.error = std::string("internal error: ") + e.what();
     return run;
@@ -111,6 +117,14 @@ Run run(const MeshType& m, const Options& options, const std::function<void(cons
   }
   for (const std::string& line : result_lines(run.result)) log(line);
   return run;
+}
+
+// Writes a successful run into the mesh (per-vertex texcoords of a disk; one of the wedges' for
+// charts).
+template <class MeshType>
+void write_result(MeshType& m, const Run& run) {
+  if (run.result.input_is_disk) write_parameterization(m, run.rows, run.result.disk);
+  else write_chart_parameterization(m, run.rows, run.result);
 }
 
 // The checkerboard texture: "filter_lowstretch/checkerboard.png" next to the plugin file (it is

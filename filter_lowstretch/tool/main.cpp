@@ -1,4 +1,5 @@
-// lowstretch: the low-stretch parameterization of a disk-like mesh, from the command line.
+// lowstretch: the low-stretch parameterization of a disk-like mesh (or of any manifold mesh cut
+// into disk charts), from the command line.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -8,8 +9,10 @@
 #include <sstream>
 #include <string>
 
+#include "../core/charts.h"
 #include "../core/parameterize.h"
 #include "../vcg/mesh_arrays.h"
+#include "../vcg/pack_charts.h"
 #include "mesh_io.h"
 #include "uv_svg.h"
 
@@ -20,8 +23,10 @@ using namespace lowstretch;
 const char* kUsage =
     "usage: lowstretch INPUT [-o OUTPUT.obj|.ply] [--boundary square|circle|natural]\n"
     "                  [--weights floater|meanvalue|harmonic] [--exponent E] [--max-passes N]\n"
-    "                  [--all-passes] [--json] [--svg UV.svg]\n"
+    "                  [--all-passes] [--non-disk reject|charts] [--json] [--svg UV.svg]\n"
     "Reads OFF, OBJ or PLY; writes per-corner texture coordinates and stretch as quality.\n"
+    "--non-disk charts parameterizes a mesh that is not a disk (holes, closed, handles, several\n"
+    "parts) as disk charts packed into the unit square; reject (the default) refuses it.\n"
     "--all-passes runs max-passes passes even when the stretch stops falling (benchmarks).\n"
     "Exit codes: 0 done, 1 bad arguments, 2 unreadable input, 3 mesh not usable, 4 cannot write.\n";
 
@@ -30,7 +35,7 @@ enum Exit { kDone = 0, kBadArguments = 1, kUnreadable = 2, kRejected = 3, kCanno
 struct Arguments {
   std::string input, output, svg;
   bool json = false;
-  Options options;
+  ChartOptions charts;
 };
 
 bool parse_number(const char* text, double& value) {
@@ -46,31 +51,37 @@ std::string parse(int argc, char** argv, Arguments& a) {
     const bool has_value = i + 1 < argc;
     auto value = [&]() { return std::string(argv[++i]); };
     if (arg == "--json") a.json = true;
-    else if (arg == "--all-passes") a.options.stop_when_stretch_rises = false;
+    else if (arg == "--all-passes") a.charts.disk.stop_when_stretch_rises = false;
     else if (arg == "-h" || arg == "--help") return "help";
     else if ((arg == "-o" || arg == "--svg" || arg == "--boundary" || arg == "--weights" || arg == "--exponent" ||
-              arg == "--max-passes") && !has_value) return arg + " needs a value";
+              arg == "--max-passes" || arg == "--non-disk") && !has_value) return arg + " needs a value";
     else if (arg == "-o") a.output = value();
     else if (arg == "--svg") a.svg = value();
+    else if (arg == "--non-disk") {
+      const std::string v = value();
+      if (v == "reject") a.charts.non_disk = NonDisk::Reject;
+      else if (v == "charts") a.charts.non_disk = NonDisk::Charts;
+      else return "--non-disk takes reject or charts, not '" + v + "'";
+    }
     else if (arg == "--boundary") {
       const std::string v = value();
-      if (v == "square") a.options.boundary = BoundaryShape::Square;
-      else if (v == "circle") a.options.boundary = BoundaryShape::Circle;
-      else if (v == "natural") a.options.boundary = BoundaryShape::Natural;
+      if (v == "square") a.charts.disk.boundary = BoundaryShape::Square;
+      else if (v == "circle") a.charts.disk.boundary = BoundaryShape::Circle;
+      else if (v == "natural") a.charts.disk.boundary = BoundaryShape::Natural;
       else return "--boundary takes square, circle or natural, not '" + v + "'";
     } else if (arg == "--weights") {
       const std::string v = value();
-      if (v == "floater") a.options.weights = InitialWeights::Floater;
-      else if (v == "meanvalue") a.options.weights = InitialWeights::MeanValue;
-      else if (v == "harmonic") a.options.weights = InitialWeights::Harmonic;
+      if (v == "floater") a.charts.disk.weights = InitialWeights::Floater;
+      else if (v == "meanvalue") a.charts.disk.weights = InitialWeights::MeanValue;
+      else if (v == "harmonic") a.charts.disk.weights = InitialWeights::Harmonic;
       else return "--weights takes floater, meanvalue or harmonic, not '" + v + "'";
     } else if (arg == "--exponent") {
-      if (!parse_number(argv[++i], a.options.exponent)) return "--exponent takes a number in (0, 1]";
+      if (!parse_number(argv[++i], a.charts.disk.exponent)) return "--exponent takes a number in (0, 1]";
     } else if (arg == "--max-passes") {
       double passes = 0;
       if (!parse_number(argv[++i], passes) || passes != std::floor(passes) || passes < 0 || passes > 1000)
         return "--max-passes takes a whole number from 0 to 1000";
-      a.options.max_passes = int(passes);
+      a.charts.disk.max_passes = int(passes);
     } else if (!arg.empty() && arg[0] == '-') return "unknown option " + arg;
     else if (a.input.empty()) a.input = arg;
     else return "more than one input file: " + arg;
@@ -98,24 +109,44 @@ std::string quoted(const std::string& text) {
   return out + "\"";
 }
 
-void print_json(const Arguments& a, const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Result& r) {
+std::string pass_json(const PassMetrics& p) {
+  std::ostringstream o;
+  o << "{\"pass\": " << p.pass << ", \"l2_stretch\": " << number(p.l2_stretch)
+    << ", \"linf_stretch\": " << number(p.linf_stretch) << ", \"edge_distortion\": " << number(p.edge_distortion)
+    << ", \"angle_distortion\": " << number(p.angle_distortion) << ", \"area_distortion\": " << number(p.area_distortion)
+    << ", \"flipped\": " << p.flipped << ", \"degenerate\": " << p.degenerate << ", \"seconds\": " << number(p.seconds)
+    << ", \"seconds_assembly\": " << number(p.seconds_assembly) << ", \"seconds_factorization\": " << number(p.seconds_factorization)
+    << ", \"seconds_solve\": " << number(p.seconds_solve) << ", \"seconds_metrics\": " << number(p.seconds_metrics) << "}";
+  return o.str();
+}
+
+// A disk's passes as before; with --non-disk charts also the charts, and for a mesh that is not
+// a disk the layout's metrics in place of the passes.
+void print_json(const Arguments& a, const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartsResult& c) {
   std::ostringstream o;
   o << "{\"input\": " << quoted(a.input) << ", \"vertices\": " << V.rows() << ", \"faces\": " << F.rows()
-    << ", \"boundary\": \"" << to_string(a.options.boundary) << "\", \"weights\": \"" << to_string(a.options.weights)
-    << "\", \"exponent\": " << number(a.options.exponent) << ", \"max_passes\": " << a.options.max_passes
-    << ",\n \"passes\": [";
-  for (size_t i = 0; i < r.passes.size(); ++i) {
-    const PassMetrics& p = r.passes[i];
-    o << (i ? ",\n  " : "\n  ") << "{\"pass\": " << p.pass << ", \"l2_stretch\": " << number(p.l2_stretch)
-      << ", \"linf_stretch\": " << number(p.linf_stretch) << ", \"edge_distortion\": " << number(p.edge_distortion)
-      << ", \"angle_distortion\": " << number(p.angle_distortion) << ", \"area_distortion\": " << number(p.area_distortion)
-      << ", \"flipped\": " << p.flipped << ", \"degenerate\": " << p.degenerate << ", \"seconds\": " << number(p.seconds)
-      << ", \"seconds_assembly\": " << number(p.seconds_assembly) << ", \"seconds_factorization\": " << number(p.seconds_factorization)
-      << ", \"seconds_solve\": " << number(p.seconds_solve) << ", \"seconds_metrics\": " << number(p.seconds_metrics) << "}";
+    << ", \"boundary\": \"" << to_string(a.charts.disk.boundary) << "\", \"weights\": \"" << to_string(a.charts.disk.weights)
+    << "\", \"exponent\": " << number(a.charts.disk.exponent) << ", \"max_passes\": " << a.charts.disk.max_passes;
+  if (c.input_is_disk) {
+    const Result& r = c.disk;
+    o << ",\n \"passes\": [";
+    for (size_t i = 0; i < r.passes.size(); ++i) o << (i ? ",\n  " : "\n  ") << pass_json(r.passes[i]);
+    o << "],\n \"chosen_pass\": " << r.chosen_pass << ", \"stop_reason\": " << quoted(to_string(r.stop_reason));
   }
-  o << "],\n \"chosen_pass\": " << r.chosen_pass << ", \"stop_reason\": " << quoted(to_string(r.stop_reason))
-    << ", \"seconds_total\": " << number(r.seconds_total) << ", \"notes\": [";
-  for (size_t i = 0; i < r.notes.size(); ++i) o << (i ? ", " : "") << quoted(r.notes[i]);
+  if (a.charts.non_disk == NonDisk::Charts) {
+    o << ",\n \"non_disk\": \"charts\", \"input_is_disk\": " << (c.input_is_disk ? "true" : "false")
+      << ", \"chart_count\": " << c.charts.size() << ", \"seam_length\": " << number(c.seam_length)
+      << ", \"coverage\": " << number(c.coverage) << ",\n \"layout\": " << pass_json(c.layout) << ",\n \"charts\": [";
+    for (size_t i = 0; i < c.charts.size(); ++i) {
+      const Chart& ch = c.charts[i];
+      o << (i ? ",\n  " : "\n  ") << "{\"faces\": " << ch.faces << ", \"closed_holes\": " << ch.closed_holes
+        << ", \"seam_length\": " << number(ch.seam_length) << ", \"l2_stretch\": " << number(ch.l2_stretch)
+        << ", \"chosen_pass\": " << ch.chosen_pass << ", \"passes\": " << ch.passes << "}";
+    }
+    o << "]";
+  }
+  o << ",\n \"seconds_total\": " << number(c.seconds_total) << ", \"notes\": [";
+  for (size_t i = 0; i < c.notes.size(); ++i) o << (i ? ", " : "") << quoted(c.notes[i]);
   o << "]}\n";
   std::cout << o.str();
 }
@@ -128,6 +159,21 @@ void print_table(const Result& r) {
                 p.pass == r.chosen_pass ? "  <- kept" : "");
   std::printf("kept pass %d (%s); %.3f s\n", r.chosen_pass, to_string(r.stop_reason), r.seconds_total);
   for (const std::string& note : r.notes) std::printf("note: %s\n", note.c_str());
+}
+
+void print_charts_table(const ChartsResult& c) {
+  std::printf("chart  faces  holes closed  seam length  L2 stretch  kept pass\n");
+  for (size_t i = 0; i < c.charts.size(); ++i) {
+    const Chart& ch = c.charts[i];
+    std::printf("%5zu %6d %13d %12.4g %11.4f %10d\n", i, ch.faces, ch.closed_holes, ch.seam_length, ch.l2_stretch,
+                ch.chosen_pass);
+  }
+  const PassMetrics& p = c.layout;
+  std::printf("%zu charts, seam length %.4g, coverage %.4f; whole layout: L2 stretch %.4f, Linf stretch %.4g, edge %.4f, "
+              "angle %.4f, area %.4f, flips %d, zero-area %d; %.3f s\n",
+              c.charts.size(), c.seam_length, c.coverage, p.l2_stretch, p.linf_stretch, p.edge_distortion,
+              p.angle_distortion, p.area_distortion, p.flipped, p.degenerate, c.seconds_total);
+  for (const std::string& note : c.notes) std::printf("note: %s\n", note.c_str());
 }
 
 // The texture the output names: the project's checkerboard, copied beside the output once the
@@ -156,16 +202,18 @@ int main(int argc, char** argv) {
   Eigen::MatrixXi F;
   const ArrayRows rows = mesh_to_arrays(mesh, V, F);
 
-  const Result result = parameterize(V, F, args.options);
+  const ChartsResult result = parameterize_charts(V, F, args.charts, pack_charts_with_vcglib);
   if (result.error) {
     std::cerr << "lowstretch: " << args.input << ": " << message(result.error) << "\n";
     return kRejected;
   }
   if (args.json) print_json(args, V, F, result);
-  else print_table(result);
+  else if (result.input_is_disk) print_table(result.disk);
+  else print_charts_table(result);
 
   if (!args.output.empty()) {
-    write_parameterization(mesh, rows, result);
+    if (result.input_is_disk) write_parameterization(mesh, rows, result.disk);
+    else write_chart_parameterization(mesh, rows, result);
     if (!write_mesh(args.output, mesh, kTexture, error)) {
       std::cerr << "lowstretch: " << error << "\n";
       return kCannotWrite;
@@ -174,9 +222,19 @@ int main(int argc, char** argv) {
   }
   if (!args.svg.empty()) {
     std::ostringstream title;
-    title << args.input.substr(args.input.find_last_of('/') + 1) << ": " << to_string(args.options.boundary) << ", pass " << result.chosen_pass << ", L2 stretch "
-          << result.passes[size_t(result.chosen_pass)].l2_stretch;
-    if (!write_uv_svg(args.svg, result.uv, F, result.face_stretch, title.str(), error)) {
+    title << args.input.substr(args.input.find_last_of('/') + 1) << ": " << to_string(args.charts.disk.boundary);
+    if (result.input_is_disk) title << ", pass " << result.disk.chosen_pass;
+    else title << ", " << result.charts.size() << " charts";
+    title << ", L2 stretch " << result.layout.l2_stretch;
+    // Three UV rows per face, so that seams show as they are.
+    Eigen::MatrixXd corner_uv(3 * F.rows(), 2);
+    Eigen::MatrixXi corner_faces(F.rows(), 3);
+    for (Eigen::Index f = 0; f < F.rows(); ++f)
+      for (int k = 0; k < 3; ++k) {
+        corner_uv.row(3 * f + k) = result.corner_uv.block(f, 2 * k, 1, 2);
+        corner_faces(f, k) = int(3 * f + k);
+      }
+    if (!write_uv_svg(args.svg, corner_uv, corner_faces, result.face_stretch, title.str(), error)) {
       std::cerr << "lowstretch: " << error << "\n";
       return kCannotWrite;
     }

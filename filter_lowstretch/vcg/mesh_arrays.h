@@ -7,6 +7,7 @@
 
 #include <vcg/complex/complex.h>
 
+#include "../core/charts.h"
 #include "../core/parameterize.h"
 
 namespace lowstretch {
@@ -66,6 +67,29 @@ void write_parameterization(MeshType& m, const ArrayRows& rows, const Result& re
       f.WT(k).U() = f.V(k)->T().U();
       f.WT(k).V() = f.V(k)->T().V();
       f.WT(k).N() = 0;
+    }
+    f.Q() = typename MeshType::FaceType::QualityType(result.face_stretch(Eigen::Index(r)));
+  }
+}
+
+// The same for charts: per-wedge texcoords from the per-corner UV (a seam vertex has one per
+// side); a vertex's own texcoord is that of one of its wedges.
+template <class MeshType>
+void write_chart_parameterization(MeshType& m, const ArrayRows& rows, const ChartsResult& result) {
+  using TexScalar = typename MeshType::FaceType::TexCoordType::ScalarType;
+  using VertexTexScalar = typename MeshType::VertexType::TexCoordType::ScalarType;
+  for (size_t r = 0; r < rows.vertex_index.size(); ++r)
+    m.vert[size_t(rows.vertex_index[r])].Q() =
+        typename MeshType::VertexType::QualityType(result.vertex_stretch(Eigen::Index(r)));
+  for (size_t r = 0; r < rows.face_index.size(); ++r) {
+    auto& f = m.face[size_t(rows.face_index[r])];
+    for (int k = 0; k < 3; ++k) {
+      f.WT(k).U() = TexScalar(result.corner_uv(Eigen::Index(r), 2 * k));
+      f.WT(k).V() = TexScalar(result.corner_uv(Eigen::Index(r), 2 * k + 1));
+      f.WT(k).N() = 0;
+      f.V(k)->T().U() = VertexTexScalar(f.WT(k).U());
+      f.V(k)->T().V() = VertexTexScalar(f.WT(k).V());
+      f.V(k)->T().N() = 0;
     }
     f.Q() = typename MeshType::FaceType::QualityType(result.face_stretch(Eigen::Index(r)));
   }

@@ -45,6 +45,9 @@ PASS_RE = re.compile(rf"pass (\d+): L2 stretch {NUM}, Linf stretch {NUM}, edge d
 KEPT_RE = re.compile(rf"kept pass (\d+) \(L2 stretch {NUM}\); stop reason: (.+?); total {NUM} s")
 HEADER_RE = re.compile(rf"{FILTER}: (\d+) vertices, (\d+) faces;")
 FAIL_RE = re.compile(rf"{FILTER} failed: (.*)")
+CHARTS_RE = re.compile(rf"(\d+) charts, seam length {NUM}, coverage {NUM}; whole layout: L2 stretch {NUM}, "
+                       rf"Linf stretch {NUM}, edge distortion {NUM}, angle distortion {NUM}, area distortion {NUM}, "
+                       rf"flipped (\d+), degenerate (\d+)")
 LOADED_RE = re.compile(r"loaded has (\d+) vn (\d+) fn")
 # What README.md of ../shared/meshes says is wrong with each bad mesh, as words of the message.
 EXPECTED = {
@@ -433,6 +436,76 @@ def cmd_disk(args):
     return check
 
 
+def signed_area(a, b, c):
+    return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]))
+
+
+def overlapping_pixels(triangles, n=1024):
+    """Pixel centres of an n x n raster strictly inside two triangles of the layout."""
+    owner = {}
+    overlaps = 0
+    for a, b, c in triangles:
+        a, b, c = [(p[0] * n, p[1] * n) for p in (a, b, c)]
+        area = signed_area(a, b, c)
+        if area <= 0:
+            continue
+        eps = 1e-9 * area
+        for y in range(max(0, math.floor(min(a[1], b[1], c[1]))), min(n - 1, math.ceil(max(a[1], b[1], c[1]))) + 1):
+            for x in range(max(0, math.floor(min(a[0], b[0], c[0]))), min(n - 1, math.ceil(max(a[0], b[0], c[0]))) + 1):
+                p = (x + 0.5, y + 0.5)
+                if signed_area(a, b, p) > eps and signed_area(b, c, p) > eps and signed_area(c, a, p) > eps:
+                    overlaps += (x, y) in owner
+                    owner[(x, y)] = True
+    return overlaps
+
+
+def cmd_charts(args):
+    """A mesh that is not a disk, with "Non-disk input: Make charts": per-wedge texcoords in
+    [0,1]^2 on every face, no flipped or zero-area triangle, no overlap; the same charts, seams and
+    stretch as the lowstretch tool on the same (float) input."""
+    check = Checks()
+    input_path, name = prepare(args, generate.NON_DISKS)
+    mask = ["-m", "wt", "vq", "fq"]
+    reference = os.path.join(args.work, "reference.ply")
+    proc = meshlabserver(args.prefix, args.work, "reference.log", ["-i", input_path, "-o", reference] + mask)
+    if not check(proc.returncode == 0 and os.path.isfile(reference), f"meshlabserver loads {name} and saves it"):
+        return check
+    out = os.path.join(args.work, "out.ply")
+    proc = meshlabserver(args.prefix, args.work, "meshlabserver.log",
+                         ["-i", reference, "-o", out] + mask + ["-s", os.path.join(args.resources, "lowstretch_charts.mlx")])
+    if not check(proc.returncode == 0 and os.path.isfile(out), f"meshlabserver applies the filter (exit code {proc.returncode})"):
+        return check
+    summary = CHARTS_RE.search(proc.stdout)
+    if not check(summary is not None, "the log has the charts summary line"):
+        return check
+    charts, seam, l2 = int(summary.group(1)), float(summary.group(2)), float(summary.group(4))
+    print(f"{name}: {charts} charts, seam length {seam}, L2 stretch {l2}")
+    check(int(summary.group(9)) == 0 and int(summary.group(10)) == 0, "the log reports no flipped and no degenerate triangle")
+
+    ply, ref = meshio.read_ply(out), meshio.read_ply(reference)
+    check(ply.faces() == ref.faces(), f"the faces are the input's ({len(ref.faces())})")
+    texcoords = ply.elements["face"].data.get("texcoord")
+    if not check(texcoords is not None and len(texcoords) == len(ply.faces()), "every face has wedge texcoords"):
+        return check
+    check(all(len(tc) == 6 and all(0.0 <= t <= 1.0 for t in tc) for tc in texcoords), "all wedge texcoords are in [0,1]^2")
+    triangles = [((tc[0], tc[1]), (tc[2], tc[3]), (tc[4], tc[5])) for tc in texcoords]
+    bad = sum(1 for t in triangles if not signed_area(*t) > 0)
+    check(bad == 0, f"no flipped or zero-area triangle in any chart ({bad})")
+    overlaps = overlapping_pixels(triangles)
+    check(overlaps == 0, f"no two triangles overlap (pixel centres of a 1024 raster covered twice: {overlaps})")
+
+    if args.tool:
+        command = [args.tool, reference, "--non-disk", "charts", "--json"]
+        tool = subprocess.run(command, cwd=args.work, capture_output=True, text=True, errors="replace", timeout=900)
+        if check(tool.returncode == 0, f"the lowstretch tool makes charts too (exit code {tool.returncode})"):
+            result = json.loads(tool.stdout)
+            check(result["chart_count"] == charts and rel_diff(result["seam_length"], seam) < 1e-5
+                  and rel_diff(result["layout"]["l2_stretch"], l2) < 1e-5,
+                  f"the tool agrees: {result['chart_count']} charts, seam length {result['seam_length']}, "
+                  f"L2 stretch {result['layout']['l2_stretch']}")
+    return check
+
+
 def script_with(args, settings, path):
     """resources/lowstretch.mlx with some parameters changed (name=value), written to path."""
     script = ET.parse(mlx(args))
@@ -559,7 +632,7 @@ def cmd_deleted(args):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("command", choices=("prefix", "disk", "bad", "deleted"))
+    parser.add_argument("command", choices=("prefix", "disk", "bad", "deleted", "charts"))
     parser.add_argument("--prefix", required=True, help="private MeshLab prefix")
     parser.add_argument("--plugin", help="libfilter_lowstretch.so under test")
     parser.add_argument("--resources", help="the repository's resources/ folder (the .mlx scripts)")
@@ -579,7 +652,7 @@ def main():
     if args.mesh and not os.path.isfile(args.mesh):
         print(f"FAILED: input mesh {args.mesh} does not exist")
         return 1
-    check = {"disk": cmd_disk, "bad": cmd_bad, "deleted": cmd_deleted}[args.command](args)
+    check = {"disk": cmd_disk, "bad": cmd_bad, "deleted": cmd_deleted, "charts": cmd_charts}[args.command](args)
     print(f"{len(check.failed)} check(s) failed" if check.failed else "all checks passed")
     return 1 if check.failed else 0
 

@@ -135,6 +135,40 @@ def disk_with_flap(n=16, every=7):
     return vertices, faces, quality
 
 
+def torus(rings=24, sectors=12):
+    """Not a disk: closed, genus 1."""
+    vertices = [((2 + math.cos(2 * math.pi * s / sectors)) * math.cos(2 * math.pi * r / rings),
+                 (2 + math.cos(2 * math.pi * s / sectors)) * math.sin(2 * math.pi * r / rings),
+                 math.sin(2 * math.pi * s / sectors)) for r in range(rings) for s in range(sectors)]
+    def vid(r, s):
+        return (r % rings) * sectors + s % sectors
+    faces = []
+    for r in range(rings):
+        for s in range(sectors):
+            faces += [(vid(r, s), vid(r + 1, s), vid(r + 1, s + 1)), (vid(r, s), vid(r + 1, s + 1), vid(r, s + 1))]
+    return vertices, faces
+
+
+def sphere(rings=12, sectors=16):
+    """Not a disk: closed, genus 0 (a UV sphere)."""
+    vertices = [(0.0, 0.0, 1.0), (0.0, 0.0, -1.0)]
+    for r in range(1, rings):
+        theta = math.pi * r / rings
+        vertices += [(math.sin(theta) * math.cos(2 * math.pi * s / sectors),
+                      math.sin(theta) * math.sin(2 * math.pi * s / sectors), math.cos(theta)) for s in range(sectors)]
+    def vid(r, s):
+        return 2 + (r - 1) * sectors + s % sectors
+    faces = [(0, vid(1, s), vid(1, s + 1)) for s in range(sectors)]
+    faces += [(1, vid(rings - 1, s + 1), vid(rings - 1, s)) for s in range(sectors)]
+    for r in range(1, rings - 1):
+        for s in range(sectors):
+            faces += [(vid(r, s), vid(r + 1, s), vid(r + 1, s + 1)), (vid(r, s), vid(r + 1, s + 1), vid(r, s + 1))]
+    return vertices, faces
+
+
 DISKS = {"wavy_grid": wavy_grid, "hemisphere": hemisphere, "grid_with_unused_vertices": grid_with_unused_vertices}
 BAD = {"two_components": two_components, "tetrahedron": tetrahedron, "octahedron": octahedron,
        "three_holes": three_holes, "point_cloud": point_cloud}
+# Not disks, but manifold and oriented: "Make charts" parameterizes them.
+NON_DISKS = {"two_components": two_components, "three_holes": three_holes, "octahedron": octahedron,
+             "torus": torus, "sphere": sphere}

@@ -1,4 +1,5 @@
-// libFuzzer target: lowstretch::parameterize on small (V, F) arrays decoded from the bytes:
+// libFuzzer target: lowstretch::parameterize, then lowstretch::parameterize_charts (non-disk
+// input as charts, packed by vcglib) on small (V, F) arrays decoded from the bytes:
 // out-of-range and repeated indices, NaN, infinite, huge and tiny coordinates, duplicate and
 // flipped faces, zero faces, one triangle, flaps, coincident vertices, every option.
 //
@@ -19,8 +20,10 @@
 #include <limits>
 #include <vector>
 
+#include "core/charts.h"
 #include "core/parameterize.h"
 #include "generated_meshes.h"
+#include "vcg/pack_charts.h"
 
 namespace {
 
@@ -167,6 +170,28 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::fflush(stdout);
   }
   const lowstretch::Result r = lowstretch::parameterize(V, F, options);
+  // Charts of the same arrays (a disk gives the same as above, anything else its own layout).
+  calls = 0;
+  lowstretch::ChartOptions chart_options;
+  chart_options.disk = options;
+  chart_options.non_disk = lowstretch::NonDisk::Charts;
+  const lowstretch::ChartsResult c = lowstretch::parameterize_charts(V, F, chart_options, lowstretch::pack_charts_with_vcglib);
+  if (std::getenv("LOWSTRETCH_FUZZ_PRINT")) {
+    std::printf("charts: error %s (%s), input is a disk %d, %d charts, uv in [%.17g, %.17g]\n", lowstretch::code_name(c.error.code),
+                c.error ? lowstretch::message(c.error).c_str() : "", int(c.input_is_disk), int(c.charts.size()),
+                c.error ? 0.0 : c.corner_uv.minCoeff(), c.error ? 0.0 : c.corner_uv.maxCoeff());
+    std::fflush(stdout);
+  }
+  if (c.error) {
+    if (lowstretch::message(c.error).empty()) std::abort();
+  } else if (c.corner_uv.rows() != F.rows() || c.corner_uv.cols() != 6 || !c.corner_uv.allFinite() ||
+             // a disk's own map can leave [0,1]^2 a little (harmonic weights, natural boundary)
+             (!c.input_is_disk && (c.corner_uv.minCoeff() < 0 || c.corner_uv.maxCoeff() > 1)) ||
+             c.face_stretch.size() != F.rows() ||
+             c.vertex_stretch.size() != V.rows() || c.face_chart.size() != size_t(F.rows()) || c.charts.empty()) {
+    std::abort();
+  }
+  if (!r.error && (!c.input_is_disk || c.error)) std::abort();  // a disk stays a disk
   if (std::getenv("LOWSTRETCH_FUZZ_PRINT")) {
     std::printf("error %s (%s)\n", lowstretch::code_name(r.error.code), r.error ? lowstretch::message(r.error).c_str() : "");
     if (!r.error) std::printf("uv finite %d, passes %d, chosen %d\n", int(r.uv.allFinite()), int(r.passes.size()), r.chosen_pass);

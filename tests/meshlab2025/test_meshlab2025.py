@@ -64,7 +64,8 @@ def check_outputs(check, proc):
     outputs = {m[1]: (m[2], m[3]) for m in OUTPUT_RE.finditer(proc.stdout)}
     expected = {"l2_stretch": "double", "linf_stretch": "double", "edge_distortion": "double",
                 "angle_distortion": "double", "area_distortion": "double", "flipped": "int", "degenerate": "int",
-                "kept_pass": "int", "passes": "int", "initial_l2_stretch": "double", "seconds": "double"}
+                "kept_pass": "int", "passes": "int", "initial_l2_stretch": "double", "seconds": "double",
+                "charts": "int", "seam_length": "double", "coverage": "double"}
     if not check({k: t for k, (v, t) in outputs.items()} == expected,
                  f"applyFilter returns the output values {sorted(expected)} with their types"):
         return

@@ -27,7 +27,7 @@ PYMESHLAB = "pymeshlab==2025.7.post1"
 NAME = "compute_texcoord_parametrization_low_stretch"
 KEYS = {"l2_stretch": float, "linf_stretch": float, "edge_distortion": float, "angle_distortion": float,
         "area_distortion": float, "flipped": int, "degenerate": int, "kept_pass": int, "passes": int,
-        "initial_l2_stretch": float, "seconds": float}
+        "initial_l2_stretch": float, "seconds": float, "charts": int, "seam_length": float, "coverage": float}
 
 
 class Checks:
@@ -139,6 +139,19 @@ def inside(args):
     m = ms.current_mesh()
     check((m.vertex_matrix() == before[0]).all() and (m.face_matrix() == before[1]).all()
           and not m.has_wedge_tex_coord(), "that mesh is unchanged and has no texcoords")
+
+    charts = ms.apply_filter(NAME, nondisk="Make charts")
+    print(f"        nondisk='Make charts': {json.dumps(charts)}")
+    check(set(charts) == set(KEYS) and charts["charts"] >= 1 and charts["flipped"] == 0 and charts["degenerate"] == 0
+          and 0 < charts["coverage"] <= 1, f"nondisk='Make charts' parameterizes it: {charts['charts']} charts, "
+          f"coverage {charts['coverage']:.4g}, no flip")
+    m = ms.current_mesh()
+    if check(m.has_wedge_tex_coord(), "it now has per-wedge texcoords"):
+        wtc = m.wedge_tex_coord_matrix().astype(np.float64)
+        area_u = stretch(np, m.vertex_matrix(), m.face_matrix(), wtc)[0]
+        check(wtc.shape == (3 * len(m.face_matrix()), 2) and wtc.min() >= 0 and wtc.max() <= 1
+              and int((area_u <= 0).sum()) == 0,
+              f"wedge texcoords in [0,1]^2, no flipped or zero-area triangle ({int((area_u <= 0).sum())})")
     return check
 
 

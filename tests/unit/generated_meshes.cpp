@@ -91,6 +91,62 @@ Mesh torus(int rings, int sectors) {
   return from_lists(v, f);
 }
 
+Mesh sphere(int rings, int sectors) {
+  std::vector<Eigen::RowVector3d> v{{0, 0, 1}, {0, 0, -1}};
+  std::vector<Eigen::RowVector3i> f;
+  for (int r = 1; r < rings; ++r) {
+    const double polar = kPi * r / rings;
+    for (int s = 0; s < sectors; ++s) {
+      const double a = 2 * kPi * s / sectors;
+      v.emplace_back(std::sin(polar) * std::cos(a), std::sin(polar) * std::sin(a), std::cos(polar));
+    }
+  }
+  auto id = [sectors](int r, int s) { return 2 + (r - 1) * sectors + (s % sectors); };
+  for (int s = 0; s < sectors; ++s) {
+    f.emplace_back(0, id(1, s), id(1, s + 1));
+    f.emplace_back(1, id(rings - 1, s + 1), id(rings - 1, s));
+  }
+  for (int r = 1; r + 1 < rings; ++r)
+    for (int s = 0; s < sectors; ++s) {
+      f.emplace_back(id(r, s), id(r + 1, s), id(r + 1, s + 1));
+      f.emplace_back(id(r, s), id(r + 1, s + 1), id(r, s + 1));
+    }
+  return from_lists(v, f);
+}
+
+Mesh punched_grid(int n, const std::vector<Eigen::RowVector2d>& centres, double radius) {
+  const Mesh g = grid(n);
+  Mesh m = g;
+  Eigen::Index kept = 0;
+  for (Eigen::Index f = 0; f < g.F.rows(); ++f) {
+    const Eigen::RowVector3d c = (g.V.row(g.F(f, 0)) + g.V.row(g.F(f, 1)) + g.V.row(g.F(f, 2))) / 3;
+    bool inside = false;
+    for (const Eigen::RowVector2d& centre : centres) inside |= (c.head<2>() - centre).norm() < radius;
+    if (!inside) m.F.row(kept++) = g.F.row(f);
+  }
+  m.F.conservativeResize(kept, 3);
+  return m;
+}
+
+Mesh double_torus() {
+  const Mesh t = torus(16, 8);
+  Mesh m;
+  const Eigen::Index nv = t.V.rows(), nf = t.F.rows();
+  m.V.resize(2 * nv, 3);
+  m.V << t.V, (t.V.rowwise() + Eigen::RowVector3d(8, 0, 0));
+  m.F.resize(2 * (nf - 1) + 6, 3);
+  m.F << t.F.bottomRows(nf - 1), (t.F.bottomRows(nf - 1).array() + int(nv)).matrix(), Eigen::MatrixXi::Zero(6, 3);
+  // Each hole's loop runs against its removed face (a, b, c): a -> c -> b.
+  const int p[3] = {t.F(0, 0), t.F(0, 2), t.F(0, 1)};
+  const int q[3] = {t.F(0, 0) + int(nv), t.F(0, 2) + int(nv), t.F(0, 1) + int(nv)};
+  for (int i = 0; i < 3; ++i) {
+    const int k = (3 - i) % 3, k_next = (3 - i - 1 + 3) % 3;
+    m.F.row(2 * (nf - 1) + 2 * i) << p[(i + 1) % 3], p[i], q[k];
+    m.F.row(2 * (nf - 1) + 2 * i + 1) << p[(i + 1) % 3], q[k], q[k_next];
+  }
+  return m;
+}
+
 Mesh without_face(const Mesh& mesh, int face) {
   Mesh m = mesh;
   m.F.resize(mesh.F.rows() - 1, 3);

@@ -2,6 +2,7 @@
 #pragma once
 #include <Eigen/Core>
 #include <functional>
+#include <vector>
 
 namespace testmesh {
 
@@ -20,6 +21,13 @@ Mesh octahedron();
 Mesh two_grids(int n);
 // A torus (closed, genus 1) of rings x sectors quads split into triangles.
 Mesh torus(int rings, int sectors);
+// A closed UV sphere: two poles and rings - 1 rings of `sectors` vertices.
+Mesh sphere(int rings, int sectors);
+// grid(n) with the faces whose centroid lies within `radius` of one of `centres` removed: a disk
+// with punched holes (their vertices stay, unused).
+Mesh punched_grid(int n, const std::vector<Eigen::RowVector2d>& centres, double radius);
+// Two tori, each without one face, joined by a three-sided tube between the two holes: closed, genus 2.
+Mesh double_torus();
 // Removes face `face` from the mesh (makes a hole or opens a closed mesh).
 Mesh without_face(const Mesh& mesh, int face);
 

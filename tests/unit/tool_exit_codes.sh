@@ -72,6 +72,11 @@ python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert {"vertices",
   && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL json keys"; }
 check "two components rejected" 3 "$work/two.off" -o "$work/out.ply"
 grep -q "2 connected components" "$work/stderr" && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL message"; }
+grep -q -- "--non-disk charts" "$work/stderr" && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL message names --non-disk charts"; }
+check "two components as charts" 0 "$work/two.off" --non-disk charts -o "$work/out.obj" --svg "$work/uv.svg" --json
+python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["chart_count"] == 2 and d["input_is_disk"] is False and d["seam_length"] == 0 and d["layout"]["flipped"] == 0 and 0 < d["coverage"] <= 1 and len(d["charts"]) == 2' "$work/stdout" \
+  && [ "$(grep -c '^vt ' "$work/out.obj")" -ge 6 ] && [ -s "$work/uv.svg" ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL charts: json, vt or svg"; }
+check "bad --non-disk value" 1 "$work/two.off" --non-disk maybe -o "$work/out.ply"
 check "huge header refused" 2 "$work/huge.off" -o "$work/out.ply"
 check "empty file refused" 2 "$work/empty.off" -o "$work/out.ply"
 check "bad OBJ index refused" 2 "$work/badindex.obj" -o "$work/out.ply"
@@ -90,6 +95,11 @@ if [ -d "$shared/bad" ]; then
   for f in "$shared"/bad/* "$shared"/parse_errors/*; do
     case $f in */parse_errors/*) want=2 ;; *) want=3 ;; esac
     check "$(basename "$f")" $want "$f" -o "$work/out.ply"
+  done
+  # With charts only the non-manifold and misoriented ones stay rejected.
+  for f in "$shared"/bad/*; do
+    case $f in *nonmanifold*|*nonorientable*|*orientation*) want=3 ;; *) want=0 ;; esac
+    check "$(basename "$f") as charts" $want "$f" --non-disk charts -o "$work/out.ply"
   done
 fi
 echo "tool_exit_codes: $passed passed, $failed failed"

@@ -1,0 +1,301 @@
+#include "charts.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "boundary_loops.h"
+#include "close_holes.h"
+#include "cut_graph.h"
+#include "cut_mesh.h"
+#include "disk_mesh.h"
+#include "half_edges.h"
+#include "mesh_components.h"
+#include "stretch.h"
+
+namespace lowstretch {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+const double kInf = std::numeric_limits<double>::infinity();
+
+// The problems that charts solve; anything else (non-manifold, non-orientable, bad indices or
+// coordinates) stays an error.
+bool charts_can_fix(ErrorCode code) {
+  return code == ErrorCode::SeveralComponents || code == ErrorCode::Closed || code == ErrorCode::SeveralBoundaryLoops ||
+         code == ErrorCode::NotGenusZero;
+}
+
+// The used vertices moved into a unit box, as make_disk_mesh does, so that huge coordinates do
+// not overflow lengths and areas; `unit` converts lengths back to the input's units.
+Eigen::MatrixXd unit_box(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, double& unit) {
+  Eigen::RowVector3d low = Eigen::RowVector3d::Constant(kInf), high = -low;
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      low = low.cwiseMin(V.row(F(f, k)) / 2);
+      high = high.cwiseMax(V.row(F(f, k)) / 2);
+    }
+  const Eigen::RowVector3d centre_half = low / 2 + high / 2;
+  const double extent = (high - low).maxCoeff();
+  const double divisor = extent > 0 ? extent : 1;
+  unit = 2 * divisor;
+  Eigen::MatrixXd scaled = Eigen::MatrixXd::Zero(V.rows(), 3);
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) scaled.row(F(f, k)) = (V.row(F(f, k)) / 2 - centre_half) / divisor;
+  return scaled;
+}
+
+double triangle_area(const Eigen::MatrixXd& V, int a, int b, int c) {
+  const Eigen::Vector3d p = V.row(a), q = V.row(b), r = V.row(c);
+  return 0.5 * (q - p).cross(r - p).norm();
+}
+
+double uv_area(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+  return 0.5 * ((b - a).x() * (c - a).y() - (c - a).x() * (b - a).y());
+}
+
+// One component made into a disk: its faces first (in input order), then the virtual faces
+// that close its holes.
+struct ChartMesh {
+  Eigen::MatrixXd V;
+  Eigen::MatrixXi F;
+  std::vector<int> input_face;  // real face -> input face
+  int closed_holes = 0;
+  double seam_length = 0;       // in unit-box lengths
+};
+
+// local_of: -1 for every vertex, and left so (one array for all components keeps many small
+// components linear in time).
+Error make_chart_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const std::vector<int>& faces,
+                      std::vector<int>& local_of, ChartMesh& chart) {
+  std::vector<int> input_vertex;
+  Eigen::MatrixXi local_F(Eigen::Index(faces.size()), 3);
+  for (size_t j = 0; j < faces.size(); ++j)
+    for (int k = 0; k < 3; ++k) {
+      int& l = local_of[size_t(F(faces[j], k))];
+      if (l < 0) {
+        l = int(input_vertex.size());
+        input_vertex.push_back(F(faces[j], k));
+      }
+      local_F(Eigen::Index(j), k) = l;
+    }
+  Eigen::MatrixXd local_V(Eigen::Index(input_vertex.size()), 3);
+  for (size_t i = 0; i < input_vertex.size(); ++i) {
+    local_V.row(Eigen::Index(i)) = V.row(input_vertex[i]);
+    local_of[size_t(input_vertex[i])] = -1;
+  }
+
+  DiskMesh check;
+  const Error e = make_disk_mesh(local_V, local_F, check);
+  if (e && !charts_can_fix(e.code)) return e;
+
+  const int real_vertices = int(local_V.rows());
+  const std::vector<std::vector<int>> loops = boundary_loops(local_F, opposite_half_edges(local_F), real_vertices);
+  std::vector<int> outer;
+  if (!loops.empty()) {
+    const size_t keep = longest_loop(local_V, loops);
+    outer = loops[keep];
+    close_holes(local_V, local_F, loops, keep);
+    chart.closed_holes = int(loops.size()) - 1;
+  }
+  const std::vector<std::array<int, 2>> seams = cut_graph(local_V, local_F, outer);
+  for (const auto& s : seams)
+    if (s[0] < real_vertices && s[1] < real_vertices) chart.seam_length += (local_V.row(s[0]) - local_V.row(s[1])).norm();
+  const CutMesh cut = cut_along(local_F, seams);
+  chart.F = cut.F;
+  chart.V.resize(Eigen::Index(cut.original_vertex.size()), 3);
+  for (size_t i = 0; i < cut.original_vertex.size(); ++i) chart.V.row(Eigen::Index(i)) = local_V.row(cut.original_vertex[i]);
+  chart.input_face = faces;
+  return {};
+}
+
+// A solved chart, scaled so that its UV area equals its 3D area (uniform texel density).
+struct SolvedChart {
+  std::vector<Eigen::Vector2d> corners;  // 3 per real face
+  Eigen::AlignedBox2d box;
+};
+
+SolvedChart scale_by_area(const ChartMesh& chart, const Result& r) {
+  SolvedChart solved;
+  double area_3d = 0, area_uv = 0;
+  for (size_t j = 0; j < chart.input_face.size(); ++j) {
+    const int a = chart.F(Eigen::Index(j), 0), b = chart.F(Eigen::Index(j), 1), c = chart.F(Eigen::Index(j), 2);
+    area_3d += triangle_area(chart.V, a, b, c);
+    area_uv += std::abs(uv_area(r.uv.row(a), r.uv.row(b), r.uv.row(c)));
+    for (int v : {a, b, c}) solved.corners.push_back(r.uv.row(v).transpose());
+  }
+  const double scale = area_uv > 0 && area_3d > 0 ? std::sqrt(area_3d / area_uv) : 1.0;
+  for (Eigen::Vector2d& p : solved.corners) {
+    p *= scale;
+    solved.box.extend(p);
+  }
+  return solved;
+}
+
+// Normalized L2 stretch of a set of faces (infinite if one is flipped or degenerate).
+double l2_stretch_of(const FaceStretch& s, const std::vector<int>& faces) {
+  double weighted = 0, area_3d = 0, area_uv = 0;
+  for (int f : faces) {
+    if (!s.valid(f)) return kInf;
+    weighted += s.area_3d(f) * s.sigma(f) * s.sigma(f);
+    area_3d += s.area_3d(f);
+    area_uv += std::abs(s.area_uv(f));
+  }
+  if (!(area_3d > 0)) return kInf;
+  return std::sqrt(area_uv / area_3d) * std::sqrt(weighted / area_3d);
+}
+
+ChartsResult failed(Error error) {
+  ChartsResult result;
+  result.error = std::move(error);
+  return result;
+}
+
+ChartsResult from_disk(const Eigen::MatrixXi& F, Result disk) {
+  ChartsResult result;
+  result.input_is_disk = true;
+  result.corner_uv.resize(F.rows(), 6);
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) result.corner_uv.block(f, 2 * k, 1, 2) = disk.uv.row(F(f, k));
+  result.face_chart.assign(size_t(F.rows()), 0);
+  result.face_stretch = disk.face_stretch;
+  result.vertex_stretch = disk.vertex_stretch;
+  result.layout = disk.passes.at(size_t(disk.chosen_pass));
+  Chart chart;
+  chart.faces = int(F.rows());
+  chart.l2_stretch = result.layout.l2_stretch;
+  chart.chosen_pass = disk.chosen_pass;
+  chart.passes = int(disk.passes.size());
+  result.charts.push_back(chart);
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    result.coverage += std::abs(uv_area(disk.uv.row(F(f, 0)), disk.uv.row(F(f, 1)), disk.uv.row(F(f, 2))));
+  result.seconds_total = disk.seconds_total;
+  result.notes = disk.notes;
+  result.disk = std::move(disk);
+  return result;
+}
+
+}  // namespace
+
+ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options,
+                                 const ChartPacker& pack) {
+  const Clock::time_point start = Clock::now();
+  Result whole = parameterize(V, F, options.disk);
+  if (!whole.error) return from_disk(F, std::move(whole));
+  if (options.non_disk == NonDisk::Reject || !charts_can_fix(whole.error.code)) return failed(whole.error);
+  if (!pack) return failed({ErrorCode::InvalidOption, 0, "charts need a packer"});
+
+  // parameterize checked indices, coordinates, edges and orientation of the whole mesh before it
+  // found the topology wrong; vertex fans are checked per component and between components.
+  int count = 0;
+  const std::vector<int> component = face_components(F, count);
+  if (const int shared = vertices_shared_by_components(F, int(V.rows()), component))
+    return failed({ErrorCode::NonManifoldVertices, shared, ""});
+  std::vector<std::vector<int>> faces_of(static_cast<size_t>(count));
+  for (Eigen::Index f = 0; f < F.rows(); ++f) faces_of[size_t(component[size_t(f)])].push_back(int(f));
+
+  double unit = 1;
+  const Eigen::MatrixXd unit_V = unit_box(V, F, unit);
+  ChartsResult result;
+  std::vector<SolvedChart> solved;
+  std::vector<int> local_of(static_cast<size_t>(V.rows()), -1);
+  for (int c = 0; c < count; ++c) {
+    ChartMesh mesh;
+    if (Error e = make_chart_mesh(unit_V, F, faces_of[size_t(c)], local_of, mesh)) return failed(e);
+    Options chart_options = options.disk;
+    if (options.disk.progress)
+      chart_options.progress = [&options, c, count](double fraction, const char* stage) {
+        return options.disk.progress((c + fraction) / (count + 0.1), stage);
+      };
+    const Result r = parameterize(mesh.V, mesh.F, chart_options);
+    if (r.error) return failed(r.error);
+    solved.push_back(scale_by_area(mesh, r));
+    Chart chart;
+    chart.faces = int(mesh.input_face.size());
+    chart.closed_holes = mesh.closed_holes;
+    chart.seam_length = mesh.seam_length * unit;
+    chart.chosen_pass = r.chosen_pass;
+    chart.passes = int(r.passes.size());
+    result.charts.push_back(chart);
+    result.seam_length += chart.seam_length;
+    for (const std::string& note : r.notes) result.notes.push_back("chart " + std::to_string(c) + ": " + note);
+  }
+
+  std::vector<Eigen::AlignedBox2d> boxes;
+  for (const SolvedChart& s : solved) boxes.push_back(s.box);
+  std::vector<ChartPlacement> placements;
+  if (!pack(boxes, placements) || placements.size() != boxes.size())
+    return failed({ErrorCode::InvalidOption, 0, "the charts could not be packed"});
+
+  // Placed, then the whole layout moved and scaled uniformly into [0,1]^2.
+  Eigen::AlignedBox2d layout_box;
+  for (size_t c = 0; c < solved.size(); ++c)
+    for (Eigen::Vector2d& p : solved[c].corners) {
+      p = placements[c].scale * p + placements[c].offset;
+      layout_box.extend(p);
+    }
+  const double side = layout_box.sizes().maxCoeff();
+  result.corner_uv.resize(F.rows(), 6);
+  result.face_chart.assign(size_t(F.rows()), 0);
+  for (size_t c = 0; c < solved.size(); ++c)
+    for (size_t j = 0; j < faces_of[c].size(); ++j) {
+      const int f = faces_of[c][j];
+      result.face_chart[size_t(f)] = int(c);
+      for (int k = 0; k < 3; ++k) {
+        const Eigen::Vector2d p = (solved[c].corners[3 * j + size_t(k)] - layout_box.min()) / (side > 0 ? side : 1);
+        result.corner_uv.block(f, 2 * k, 1, 2) = p.cwiseMax(0.0).cwiseMin(1.0).transpose();
+      }
+    }
+
+  // The layout as a mesh of its own (three vertices per face), measured like a disk's pass.
+  DiskMesh atlas;
+  atlas.V.resize(3 * F.rows(), 3);
+  atlas.F.resize(F.rows(), 3);
+  Eigen::MatrixXd atlas_uv(3 * F.rows(), 2);
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      atlas.V.row(3 * f + k) = unit_V.row(F(f, k));
+      atlas.F(f, k) = int(3 * f + k);
+      atlas_uv.row(3 * f + k) = result.corner_uv.block(f, 2 * k, 1, 2);
+    }
+  // Its edges: one per pair of corners that is one edge of the input and one edge of the layout.
+  std::vector<std::array<int, 2>> edges;
+  const std::vector<int> twin = opposite_half_edges(F);
+  for (int h = 0; h < int(twin.size()); ++h) {
+    const int t = twin[size_t(h)];
+    const bool joined = t >= 0 && result.face_chart[size_t(h / 3)] == result.face_chart[size_t(t / 3)] &&
+                        atlas_uv.row(h) == atlas_uv.row(next_half_edge(t)) &&
+                        atlas_uv.row(next_half_edge(h)) == atlas_uv.row(t);
+    if (!joined || h < t) edges.push_back({h, next_half_edge(h)});
+  }
+  atlas.edges.resize(Eigen::Index(edges.size()), 2);
+  for (size_t e = 0; e < edges.size(); ++e) atlas.edges.row(Eigen::Index(e)) << edges[e][0], edges[e][1];
+  const FaceStretch s = face_stretch(atlas.V, atlas.F, atlas_uv);
+  result.layout = measure(atlas, atlas_uv, s);
+  result.coverage = s.area_uv.cwiseAbs().sum();
+  result.face_stretch.resize(F.rows());
+  for (Eigen::Index f = 0; f < F.rows(); ++f) result.face_stretch(f) = s.valid(f) ? s.normalization * s.sigma(f) : kInf;
+  result.vertex_stretch = vertex_stretch(F, int(V.rows()), s);
+  std::vector<char> used(size_t(V.rows()), 0);
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) used[size_t(F(f, k))] = 1;
+  for (Eigen::Index v = 0; v < V.rows(); ++v)
+    if (!used[size_t(v)]) result.vertex_stretch(v) = 0;
+  for (size_t c = 0; c < solved.size(); ++c) result.charts[c].l2_stretch = l2_stretch_of(s, faces_of[c]);
+  result.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
+  result.layout.seconds = result.seconds_total;
+  return result;
+}
+
+const char* to_string(NonDisk non_disk) {
+  switch (non_disk) {
+    case NonDisk::Reject: return "reject";
+    case NonDisk::Charts: return "charts";
+  }
+  return "?";
+}
+
+}  // namespace lowstretch

@@ -1,0 +1,64 @@
+// Parameterizing meshes that are not disks: every connected component becomes a disk chart
+// (holes closed virtually, closed or higher-genus parts cut open along short seams), each chart
+// gets the same low-stretch map as a disk, and the charts are packed into the unit square.
+#pragma once
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "parameterize.h"
+
+namespace lowstretch {
+
+enum class NonDisk { Reject, Charts };
+
+struct ChartOptions {
+  Options disk;                        // the method, for the whole disk or for each chart
+  NonDisk non_disk = NonDisk::Reject;  // Reject: a non-disk mesh is an error, as parameterize
+};
+
+// Where the packer puts one chart: uv -> scale * uv + offset. The packer must give every chart
+// the same scale (uniform texel density) and disjoint boxes.
+struct ChartPlacement {
+  double scale = 1;
+  Eigen::Vector2d offset = Eigen::Vector2d::Zero();
+};
+// Places the charts' bounding boxes without overlap; returns false if it cannot.
+using ChartPacker = std::function<bool(const std::vector<Eigen::AlignedBox2d>& boxes, std::vector<ChartPlacement>& placements)>;
+
+struct Chart {
+  int faces = 0;
+  int closed_holes = 0;     // holes filled virtually for the solve
+  double seam_length = 0;   // 3D length of the seams cut in this chart, in the input's units
+  double l2_stretch = 0;    // normalized L2 stretch of this chart alone in the final layout
+  int chosen_pass = 0, passes = 0;
+};
+
+struct ChartsResult {
+  Error error;  // error.code != None: nothing below is filled
+  // #F x 6: (u, v) of corners 0, 1, 2 of every face, in [0,1]^2.
+  Eigen::MatrixXd corner_uv;
+  std::vector<int> face_chart;            // chart of each face
+  Eigen::VectorXd face_stretch;           // normalized over the whole layout, inf if flipped
+  Eigen::VectorXd vertex_stretch;         // per input vertex (0 if unused)
+  std::vector<Chart> charts;
+  PassMetrics layout;                     // the paper's metrics of the final layout, whole mesh
+  double seam_length = 0;                 // sum over the charts
+  double coverage = 0;                    // fraction of the unit square covered by the charts
+  double seconds_total = 0;
+  bool input_is_disk = false;             // then `disk` is parameterize's result, unchanged
+  Result disk;
+  std::vector<std::string> notes;
+};
+
+// A disk gives parameterize's result (one chart, the same UV). Any other mesh gives
+// parameterize's error unless options.non_disk is Charts and the only problems are several
+// components, holes, no boundary or genus; non-manifold or non-orientable input stays an error.
+ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options,
+                                 const ChartPacker& pack);
+
+const char* to_string(NonDisk non_disk);
+
+}  // namespace lowstretch

@@ -1,0 +1,18 @@
+// Half-edges of a triangle array: half-edge h = 3 f + k runs from F(f, k) to F(f, (k + 1) % 3),
+// and corner h is vertex F(f, k) in face f (the tail of half-edge h).
+#pragma once
+#include <Eigen/Core>
+#include <vector>
+
+namespace lowstretch {
+
+inline int half_edge_tail(const Eigen::MatrixXi& F, int h) { return F(h / 3, h % 3); }
+inline int half_edge_head(const Eigen::MatrixXi& F, int h) { return F(h / 3, (h % 3 + 1) % 3); }
+inline int next_half_edge(int h) { return (h / 3) * 3 + (h % 3 + 1) % 3; }
+
+// The opposite half-edge of each half-edge, -1 on the boundary. Meant for edge-manifold,
+// consistently oriented meshes (checked beforehand by make_disk_mesh); on others the pairing of
+// an edge shared by more than two faces is arbitrary.
+std::vector<int> opposite_half_edges(const Eigen::MatrixXi& F);
+
+}  // namespace lowstretch

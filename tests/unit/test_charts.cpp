@@ -1,0 +1,252 @@
+// Non-disk meshes as charts (core/charts.h packed by vcg/pack_charts.h): every face gets texture
+// coordinates in [0,1]^2, no chart has a flipped or zero-area triangle, no two triangles overlap,
+// and a disk gives exactly what parameterize gives.
+#include <gtest/gtest.h>
+
+#include <dirent.h>
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "core/charts.h"
+#include "generated_meshes.h"
+#include "mesh_io.h"
+#include "vcg/mesh_arrays.h"
+#include "vcg/pack_charts.h"
+
+using namespace lowstretch;
+
+namespace {
+
+ChartsResult charts_of(const testmesh::Mesh& m, NonDisk non_disk = NonDisk::Charts) {
+  ChartOptions options;
+  options.non_disk = non_disk;
+  return parameterize_charts(m.V, m.F, options, pack_charts_with_vcglib);
+}
+
+Eigen::Vector2d corner(const ChartsResult& r, Eigen::Index f, int k) { return r.corner_uv.block<1, 2>(f, 2 * k).transpose(); }
+
+double signed_area(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+  return 0.5 * ((b - a).x() * (c - a).y() - (c - a).x() * (b - a).y());
+}
+
+// Pixel centres of a 1024 x 1024 raster strictly inside two triangles (of one chart or of two):
+// any overlap of the layout that covers a pixel centre.
+int overlapping_pixels(const ChartsResult& r) {
+  const int n = 1024;
+  std::vector<int> owner(size_t(n) * n, -1);
+  int overlaps = 0;
+  for (Eigen::Index f = 0; f < r.corner_uv.rows(); ++f) {
+    const Eigen::Vector2d a = corner(r, f, 0) * n, b = corner(r, f, 1) * n, c = corner(r, f, 2) * n;
+    const double area = signed_area(a, b, c);
+    if (!(area > 0)) continue;  // counted as flipped or degenerate elsewhere
+    const int x0 = std::max(0, int(std::floor(std::min({a.x(), b.x(), c.x()})))),
+              x1 = std::min(n - 1, int(std::ceil(std::max({a.x(), b.x(), c.x()}))));
+    const int y0 = std::max(0, int(std::floor(std::min({a.y(), b.y(), c.y()})))),
+              y1 = std::min(n - 1, int(std::ceil(std::max({a.y(), b.y(), c.y()}))));
+    const double eps = 1e-9 * area;
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) {
+        const Eigen::Vector2d p(x + 0.5, y + 0.5);
+        if (signed_area(a, b, p) > eps && signed_area(b, c, p) > eps && signed_area(c, a, p) > eps) {
+          int& o = owner[size_t(y) * n + size_t(x)];
+          if (o >= 0) ++overlaps;
+          o = int(f);
+        }
+      }
+  }
+  return overlaps;
+}
+
+// What every chart layout must satisfy.
+void expect_valid_layout(const Eigen::MatrixXi& F, const ChartsResult& r) {
+  ASSERT_FALSE(r.error) << message(r.error);
+  ASSERT_EQ(r.corner_uv.rows(), F.rows());
+  ASSERT_EQ(r.corner_uv.cols(), 6);
+  ASSERT_TRUE(r.corner_uv.allFinite());
+  EXPECT_GE(r.corner_uv.minCoeff(), 0.0);
+  EXPECT_LE(r.corner_uv.maxCoeff(), 1.0);
+  int not_positive = 0;
+  for (Eigen::Index f = 0; f < F.rows(); ++f) not_positive += !(signed_area(corner(r, f, 0), corner(r, f, 1), corner(r, f, 2)) > 0);
+  EXPECT_EQ(not_positive, 0);
+  EXPECT_EQ(r.layout.flipped, 0);
+  EXPECT_EQ(r.layout.degenerate, 0);
+  EXPECT_TRUE(std::isfinite(r.layout.l2_stretch));
+  EXPECT_EQ(overlapping_pixels(r), 0);
+  EXPECT_GT(r.coverage, 0.0);
+  EXPECT_LE(r.coverage, 1.0 + 1e-12);
+  ASSERT_EQ(r.face_chart.size(), size_t(F.rows()));
+  for (int c : r.face_chart) {
+    EXPECT_GE(c, 0);
+    EXPECT_LT(c, int(r.charts.size()));
+  }
+}
+
+testmesh::Mesh disk_with_two_holes() { return testmesh::punched_grid(20, {{0.3, 0.3}, {0.7, 0.6}}, 0.12); }
+
+}  // namespace
+
+TEST(Charts, DiskGivesParameterizesResult) {
+  const testmesh::Mesh m = testmesh::grid(10, [](double x, double y) { return 0.3 * std::sin(3 * x) * y; });
+  const Result disk = parameterize(m.V, m.F);
+  const ChartsResult r = charts_of(m);
+  ASSERT_FALSE(r.error);
+  EXPECT_TRUE(r.input_is_disk);
+  ASSERT_EQ(r.charts.size(), 1u);
+  EXPECT_EQ(r.seam_length, 0.0);
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(corner(r, f, k), disk.uv.row(m.F(f, k)).transpose());
+  EXPECT_EQ(r.layout.l2_stretch, disk.passes[size_t(disk.chosen_pass)].l2_stretch);
+}
+
+TEST(Charts, RejectIsTheDefaultAndItsMessageNamesTheOption) {
+  EXPECT_EQ(ChartOptions().non_disk, NonDisk::Reject);
+  const std::vector<std::pair<testmesh::Mesh, ErrorCode>> cases = {
+      {testmesh::two_grids(3), ErrorCode::SeveralComponents},
+      {testmesh::sphere(6, 8), ErrorCode::Closed},
+      {disk_with_two_holes(), ErrorCode::SeveralBoundaryLoops},
+      {testmesh::without_face(testmesh::torus(12, 8), 0), ErrorCode::NotGenusZero}};
+  for (const auto& c : cases) {
+    const ChartsResult r = charts_of(c.first, NonDisk::Reject);
+    EXPECT_EQ(r.error.code, c.second);
+    EXPECT_NE(message(r.error).find("--non-disk charts"), std::string::npos) << message(r.error);
+    EXPECT_NE(message(r.error).find("Non-disk input"), std::string::npos) << message(r.error);
+  }
+}
+
+TEST(Charts, PunchedDiskIsOneChartWithItsHolesOpen) {
+  const testmesh::Mesh m = disk_with_two_holes();
+  const ChartsResult r = charts_of(m);
+  expect_valid_layout(m.F, r);
+  EXPECT_FALSE(r.input_is_disk);
+  ASSERT_EQ(r.charts.size(), 1u);
+  EXPECT_EQ(r.charts[0].closed_holes, 2);
+  EXPECT_EQ(r.seam_length, 0.0);
+  // One chart fills the square; the virtual faces were dropped, so the holes are not covered.
+  EXPECT_LT(r.coverage, 0.98);
+}
+
+TEST(Charts, SphereIsCutAlongOneSeam) {
+  const testmesh::Mesh m = testmesh::sphere(16, 24);
+  const ChartsResult r = charts_of(m);
+  expect_valid_layout(m.F, r);
+  ASSERT_EQ(r.charts.size(), 1u);
+  // A path between two far-apart vertices of the unit sphere: about half a great circle.
+  EXPECT_GT(r.seam_length, 2.5);
+  EXPECT_LT(r.seam_length, 4.0);
+}
+
+TEST(Charts, OctahedronOpensToo) {
+  const testmesh::Mesh m = testmesh::octahedron();  // every pair of vertices is one or two edges apart
+  const ChartsResult r = charts_of(m);
+  expect_valid_layout(m.F, r);
+  EXPECT_GT(r.seam_length, 0.0);
+}
+
+TEST(Charts, TorusIsCutOpen) {
+  const testmesh::Mesh m = testmesh::torus(32, 16);
+  const ChartsResult r = charts_of(m);
+  expect_valid_layout(m.F, r);
+  ASSERT_EQ(r.charts.size(), 1u);
+  // Two loops, one around the tube (circumference 2 pi) at least.
+  EXPECT_GT(r.seam_length, 6.0);
+}
+
+TEST(Charts, PuncturedTorusWithAHole) {
+  testmesh::Mesh m = testmesh::without_face(testmesh::torus(24, 12), 0);
+  m = testmesh::without_face(m, 300);
+  const ChartsResult r = charts_of(m);
+  expect_valid_layout(m.F, r);
+  ASSERT_EQ(r.charts.size(), 1u);
+  EXPECT_EQ(r.charts[0].closed_holes, 1);
+  EXPECT_GT(r.seam_length, 0.0);
+}
+
+TEST(Charts, GenusTwoIsCutOpen) {
+  const testmesh::Mesh m = testmesh::double_torus();
+  const long long euler = m.V.rows() - 3 * m.F.rows() / 2 + m.F.rows();
+  ASSERT_EQ(euler, -2);                                                  // closed genus 2 ...
+  ASSERT_EQ(parameterize(m.V, m.F).error.code, ErrorCode::Closed);      // ... manifold and oriented
+  const ChartsResult r = charts_of(m);
+  expect_valid_layout(m.F, r);
+  ASSERT_EQ(r.charts.size(), 1u);
+  EXPECT_GT(r.seam_length, 0.0);
+}
+
+TEST(Charts, DisjointDisksGetOneChartEachAtTheSameTexelDensity) {
+  testmesh::Mesh m = testmesh::two_grids(6);
+  const Eigen::Index half = m.V.rows() / 2;
+  m.V.bottomRows(half) *= 2;  // the second disk has four times the area
+  const ChartsResult r = charts_of(m);
+  expect_valid_layout(m.F, r);
+  ASSERT_EQ(r.charts.size(), 2u);
+  EXPECT_EQ(r.seam_length, 0.0);
+  double uv[2] = {0, 0};
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+    uv[r.face_chart[size_t(f)]] += signed_area(corner(r, f, 0), corner(r, f, 1), corner(r, f, 2));
+  const int big = r.face_chart[size_t(m.F.rows() - 1)];
+  EXPECT_NEAR(uv[big] / uv[1 - big], 4.0, 1e-9);
+}
+
+TEST(Charts, ManyComponents) {
+  // Twenty small closed parts and a disk.
+  testmesh::Mesh m = testmesh::grid(4);
+  const testmesh::Mesh part = testmesh::octahedron();
+  for (int i = 0; i < 20; ++i) {
+    const Eigen::Index v0 = m.V.rows(), f0 = m.F.rows();
+    m.V.conservativeResize(v0 + part.V.rows(), 3);
+    m.F.conservativeResize(f0 + part.F.rows(), 3);
+    m.V.bottomRows(part.V.rows()) = (part.V * (0.1 + 0.02 * i)).rowwise() + Eigen::RowVector3d(3 * i, 0, 0);
+    m.F.bottomRows(part.F.rows()) = (part.F.array() + int(v0)).matrix();
+  }
+  const ChartsResult r = charts_of(m);
+  expect_valid_layout(m.F, r);
+  EXPECT_EQ(r.charts.size(), 21u);
+}
+
+TEST(Charts, NonManifoldAndMisorientedStayRejected) {
+  // Two triangles that share only a vertex.
+  testmesh::Mesh bowtie;
+  bowtie.V.resize(5, 3);
+  bowtie.V << 0, 0, 0, 1, 0, 0, 0, 1, 0, -1, 0, 0, 0, -1, 0;
+  bowtie.F.resize(2, 3);
+  bowtie.F << 0, 1, 2, 0, 3, 4;
+  EXPECT_EQ(charts_of(bowtie).error.code, ErrorCode::NonManifoldVertices);
+  // A closed mesh with one face turned over.
+  testmesh::Mesh turned = testmesh::octahedron();
+  std::swap(turned.F(0, 1), turned.F(0, 2));
+  EXPECT_EQ(charts_of(turned).error.code, ErrorCode::InconsistentOrientation);
+  // Three faces on one edge.
+  testmesh::Mesh fin = testmesh::two_grids(2);
+  fin.F.conservativeResize(fin.F.rows() + 1, 3);
+  fin.F.bottomRows(1) << 0, 4, 12;  // 0-4 is an interior diagonal
+  EXPECT_EQ(charts_of(fin).error.code, ErrorCode::NonManifoldEdges);
+}
+
+TEST(Charts, SharedNonDiskMeshes) {
+  const std::string folder = LOWSTRETCH_SHARED_MESHES;
+  std::vector<std::string> paths;
+  for (const std::string& sub : {std::string(""), std::string("/bad")})
+    if (DIR* dir = opendir((folder + sub).c_str())) {
+      while (dirent* entry = readdir(dir)) {
+        const std::string name = entry->d_name;
+        for (const char* prefix : {"holes", "bad_closed_", "bad_components", "bad_genus1_", "bad_holes", "bad_quads"})
+          if (name.rfind(prefix, 0) == 0) paths.push_back(folder + sub + "/" + name);
+      }
+      closedir(dir);
+    }
+  if (paths.empty()) GTEST_SKIP() << "no non-disk meshes in " << folder;
+  std::sort(paths.begin(), paths.end());
+  for (const std::string& path : paths) {
+    SCOPED_TRACE(path);
+    ToolMesh mesh;
+    std::string error;
+    ASSERT_TRUE(read_mesh(path, mesh, error)) << error;
+    testmesh::Mesh m;
+    mesh_to_arrays(mesh, m.V, m.F);
+    const ChartsResult r = charts_of(m);
+    expect_valid_layout(m.F, r);
+    EXPECT_FALSE(r.input_is_disk);
+  }
+}
