@@ -63,6 +63,16 @@ Error boundary_positions(const DiskMesh& disk, BoundaryShape shape, Eigen::Matri
   return {};
 }
 
+// Negative (harmonic) weights can put interior vertices outside the boundary's hull and so
+// outside [0,1]^2: scale the whole map uniformly back in. Returns whether it had to.
+bool fit_into_unit_square(Eigen::MatrixXd& uv) {
+  const Eigen::RowVector2d low = uv.colwise().minCoeff(), high = uv.colwise().maxCoeff();
+  if (low.minCoeff() >= 0 && high.maxCoeff() <= 1) return false;
+  const double extent = (high - low).maxCoeff();
+  uv = ((uv.rowwise() - low) / (extent > 0 ? extent : 1)).eval();
+  return true;
+}
+
 Result failed(Error error) {
   Result result;
   result.error = std::move(error);
@@ -129,6 +139,8 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
     }
   }
 
+  if (fit_into_unit_square(best_uv))
+    result.notes.push_back("negative weights put vertices outside the boundary: the map was scaled into [0,1]^2");
   // Back to the input's rows; unreferenced vertices get zeros.
   result.uv = Eigen::MatrixXd::Zero(V.rows(), 2);
   result.vertex_stretch = Eigen::VectorXd::Zero(V.rows());

@@ -185,8 +185,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (c.error) {
     if (lowstretch::message(c.error).empty()) std::abort();
   } else if (c.corner_uv.rows() != F.rows() || c.corner_uv.cols() != 6 || !c.corner_uv.allFinite() ||
-             // a disk's own map can leave [0,1]^2 a little (harmonic weights, natural boundary)
-             (!c.input_is_disk && (c.corner_uv.minCoeff() < 0 || c.corner_uv.maxCoeff() > 1)) ||
+             c.corner_uv.minCoeff() < 0 || c.corner_uv.maxCoeff() > 1 ||
              c.face_stretch.size() != F.rows() ||
              c.vertex_stretch.size() != V.rows() || c.face_chart.size() != size_t(F.rows()) || c.charts.empty()) {
     std::abort();
@@ -206,6 +205,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       r.face_stretch.size() != F.rows() || r.passes.empty() || r.chosen_pass < 0 ||
       r.chosen_pass >= int(r.passes.size()) || int(r.passes.size()) > options.max_passes + 1)
     std::abort();
-  if (!r.uv.allFinite()) std::abort();  // texture coordinates must be usable
+  if (!r.uv.allFinite() || r.uv.minCoeff() < 0 || r.uv.maxCoeff() > 1) std::abort();  // usable texture coordinates
   return 0;
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/parameterize.h"
+#include "core/stretch.h"
 #include "generated_meshes.h"
 
 using namespace lowstretch;
@@ -169,4 +170,25 @@ TEST(Parameterize, ZeroAreaTrianglesInsideAreHandled) {
     EXPECT_EQ(r.passes[size_t(r.chosen_pass)].degenerate, 0);
     EXPECT_TRUE(r.uv.allFinite());
   }
+}
+
+// Harmonic weights can be negative, so an interior vertex can land outside the boundary's hull
+// and so outside [0,1]^2 (found by the fuzzer: a hemisphere with its apex pulled sideways, natural
+// boundary, every pass). The result is scaled back into the unit square.
+TEST(Parameterize, TextureCoordinatesStayInTheUnitSquareWithNegativeWeights) {
+  testmesh::Mesh m = testmesh::hemisphere(4, 4);
+  m.V(0, 0) = 1.375;
+  Options o;
+  o.boundary = BoundaryShape::Natural;
+  o.weights = InitialWeights::Harmonic;
+  o.max_passes = 2;
+  o.stop_when_stretch_rises = false;
+  const Result r = parameterize(m.V, m.F, o);
+  ASSERT_FALSE(r.error) << message(r.error);
+  EXPECT_GE(r.uv.minCoeff(), 0.0);
+  EXPECT_LE(r.uv.maxCoeff(), 1.0);
+  // The scaling is uniform, so the reported face stretch is still that of the written UV.
+  const FaceStretch written = face_stretch(m.V, m.F, r.uv);
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+    if (written.valid(f)) EXPECT_NEAR(r.face_stretch(f), written.normalization * written.sigma(f), 1e-9 * r.face_stretch(f));
 }
