@@ -228,7 +228,7 @@ ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi
   for (const SolvedChart& s : solved) boxes.push_back(s.box);
   std::vector<ChartPlacement> placements;
   if (!pack(boxes, placements) || placements.size() != boxes.size())
-    return failed({ErrorCode::InvalidOption, 0, "the charts could not be packed"});
+    return failed({ErrorCode::ChartsNotPacked, static_cast<long long>(boxes.size()), ""});
 
   // Placed, then the whole layout moved and scaled uniformly into [0,1]^2.
   Eigen::AlignedBox2d layout_box;

@@ -49,6 +49,9 @@ std::string message(const Error& e) {
     case ErrorCode::SolverFailed:
       return "the linear solve failed in pass " + n(e.count) + " (" + e.detail +
              "): try the circle boundary or Floater weights";
+    case ErrorCode::ChartsNotPacked:
+      return "the packer could not place the " + n(e.count) +
+             " charts in the unit square: remove tiny parts (MeshLab: Remove Isolated pieces) and try again";
     case ErrorCode::Cancelled: return "cancelled";
   }
   return "unknown error";
@@ -71,6 +74,7 @@ const char* code_name(ErrorCode code) {
     case ErrorCode::ZeroAreaMesh: return "zero_area_mesh";
     case ErrorCode::InvalidOption: return "invalid_option";
     case ErrorCode::SolverFailed: return "solver_failed";
+    case ErrorCode::ChartsNotPacked: return "charts_not_packed";
     case ErrorCode::Cancelled: return "cancelled";
   }
   return "unknown";

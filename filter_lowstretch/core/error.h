@@ -20,6 +20,7 @@ enum class ErrorCode {
   ZeroAreaMesh,             // count: faces (all of them have zero 3D area)
   InvalidOption,            // count: unused; detail names the option
   SolverFailed,             // count: pass number
+  ChartsNotPacked,          // count: charts
   Cancelled,                // count: unused
 };
 

@@ -189,6 +189,17 @@ TEST(Charts, DisjointDisksGetOneChartEachAtTheSameTexelDensity) {
   EXPECT_NEAR(uv[big] / uv[1 - big], 4.0, 1e-9);
 }
 
+TEST(Charts, APackerThatFailsGivesItsOwnError) {
+  const testmesh::Mesh m = testmesh::two_grids(4);
+  ChartOptions options;
+  options.non_disk = NonDisk::Charts;
+  const ChartsResult r = parameterize_charts(m.V, m.F, options, [](const std::vector<Eigen::AlignedBox2d>&,
+                                                                    std::vector<ChartPlacement>&) { return false; });
+  EXPECT_EQ(r.error.code, ErrorCode::ChartsNotPacked);
+  EXPECT_EQ(r.error.count, 2);
+  EXPECT_NE(message(r.error).find("2 charts"), std::string::npos) << message(r.error);
+}
+
 TEST(Charts, ManyComponents) {
   // Twenty small closed parts and a disk.
   testmesh::Mesh m = testmesh::grid(4);
