@@ -17,6 +17,12 @@ namespace lowstretch {
 inline bool pack_charts_with_vcglib(const std::vector<Eigen::AlignedBox2d>& boxes, std::vector<ChartPlacement>& placements) {
   placements.clear();
   if (boxes.empty()) return true;
+  if (boxes.size() == 1) {  // nothing to pack: the caller scales the layout into [0,1]^2
+    ChartPlacement only;
+    only.offset = -boxes[0].min();
+    placements.push_back(only);
+    return true;
+  }
   double largest = 0;
   for (const Eigen::AlignedBox2d& b : boxes) largest = std::max(largest, b.sizes().maxCoeff());
   if (!(largest > 0)) return false;
