@@ -148,6 +148,41 @@ double l2_stretch_of(const FaceStretch& s, const std::vector<int>& faces) {
   return std::sqrt(area_uv / area_3d) * std::sqrt(weighted / area_3d);
 }
 
+// One pass of one chart, over its real faces (the faces closing holes are not the mesh's).
+struct ChartPass {
+  double area_3d = 0, l2_stretch = 0;
+  int flipped = 0, degenerate = 0;
+};
+ChartPass measure_real_faces(const ChartMesh& chart, const Eigen::MatrixXd& uv) {
+  const Eigen::Index real = Eigen::Index(chart.input_face.size());
+  const FaceStretch s = face_stretch(chart.V, chart.F.topRows(real), uv);
+  std::vector<int> all(static_cast<size_t>(real));
+  for (int f = 0; f < int(real); ++f) all[size_t(f)] = f;
+  return {s.area_3d.sum(), l2_stretch_of(s, all), s.flipped, s.degenerate};
+}
+
+// L2 stretch of the whole layout from the charts' own: with every chart at one texel density,
+// L2^2 is the 3D-area-weighted mean of the charts' normalized L2^2.
+std::vector<LayoutPass> layout_passes(const std::vector<std::vector<ChartPass>>& passes, const std::vector<int>& kept) {
+  size_t most = 0;
+  for (const auto& p : passes) most = std::max(most, p.size());
+  std::vector<LayoutPass> layout(most);
+  for (size_t k = 0; k < most; ++k) {
+    double weighted = 0, area = 0;
+    layout[k].pass = int(k);
+    for (size_t c = 0; c < passes.size(); ++c) {
+      const ChartPass& p = k < passes[c].size() ? passes[c][k] : passes[c][size_t(kept[c])];
+      layout[k].flipped += p.flipped;
+      layout[k].degenerate += p.degenerate;
+      weighted += p.area_3d * p.l2_stretch * p.l2_stretch;
+      area += p.area_3d;
+    }
+    const bool bad = layout[k].flipped + layout[k].degenerate > 0 || !(area > 0);
+    layout[k].l2_stretch = bad ? kInf : std::sqrt(weighted / area);
+  }
+  return layout;
+}
+
 ChartsResult failed(Error error) {
   ChartsResult result;
   result.error = std::move(error);
@@ -164,6 +199,7 @@ ChartsResult from_disk(const Eigen::MatrixXi& F, Result disk) {
   result.face_stretch = disk.face_stretch;
   result.vertex_stretch = disk.vertex_stretch;
   result.layout = disk.passes.at(size_t(disk.chosen_pass));
+  for (const PassMetrics& p : disk.passes) result.passes.push_back({p.pass, p.l2_stretch, p.flipped, p.degenerate});
   Chart chart;
   chart.faces = int(F.rows());
   chart.l2_stretch = result.layout.l2_stretch;
@@ -202,6 +238,8 @@ ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi
   ChartsResult result;
   std::vector<SolvedChart> solved;
   std::vector<int> local_of(static_cast<size_t>(V.rows()), -1);
+  std::vector<std::vector<ChartPass>> chart_passes(static_cast<size_t>(count));
+  std::vector<int> kept;
   for (int c = 0; c < count; ++c) {
     ChartMesh mesh;
     if (Error e = make_chart_mesh(unit_V, F, faces_of[size_t(c)], local_of, mesh)) return failed(e);
@@ -210,8 +248,11 @@ ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi
       chart_options.progress = [&options, c, count](double fraction, const char* stage) {
         return options.disk.progress((c + fraction) / (count + 0.1), stage);
       };
+    std::vector<ChartPass>& passes = chart_passes[size_t(c)];
+    chart_options.pass_uv = [&mesh, &passes](int, const Eigen::MatrixXd& uv) { passes.push_back(measure_real_faces(mesh, uv)); };
     const Result r = parameterize(mesh.V, mesh.F, chart_options);
     if (r.error) return failed(r.error);
+    kept.push_back(r.chosen_pass);
     solved.push_back(scale_by_area(mesh, r));
     Chart chart;
     chart.faces = int(mesh.input_face.size());
@@ -223,6 +264,8 @@ ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi
     result.seam_length += chart.seam_length;
     for (const std::string& note : r.notes) result.notes.push_back("chart " + std::to_string(c) + ": " + note);
   }
+
+  result.passes = layout_passes(chart_passes, kept);
 
   std::vector<Eigen::AlignedBox2d> boxes;
   for (const SolvedChart& s : solved) boxes.push_back(s.box);

@@ -36,6 +36,14 @@ struct Chart {
   int chosen_pass = 0, passes = 0;
 };
 
+// Pass k over the whole mesh: every chart at its pass k, or at its kept pass once it has
+// stopped, laid out at one texel density (as the final layout is).
+struct LayoutPass {
+  int pass = 0;
+  double l2_stretch = 0;  // normalized; infinite if a triangle is flipped or has zero area
+  int flipped = 0, degenerate = 0;
+};
+
 struct ChartsResult {
   Error error;  // error.code != None: nothing below is filled
   // #F x 6: (u, v) of corners 0, 1, 2 of every face, in [0,1]^2.
@@ -45,6 +53,7 @@ struct ChartsResult {
   Eigen::VectorXd vertex_stretch;         // per input vertex (0 if unused)
   std::vector<Chart> charts;
   PassMetrics layout;                     // the paper's metrics of the final layout, whole mesh
+  std::vector<LayoutPass> passes;         // L2 stretch and flips of every pass, whole mesh
   double seam_length = 0;                 // sum over the charts
   double coverage = 0;                    // fraction of the unit square covered by the charts
   double seconds_total = 0;

@@ -73,6 +73,13 @@ bool fit_into_unit_square(Eigen::MatrixXd& uv) {
   return true;
 }
 
+// Compact disk rows back to the input's rows; unreferenced vertices get zeros.
+Eigen::MatrixXd input_rows(const DiskMesh& disk, const Eigen::MatrixXd& uv, Eigen::Index rows) {
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(rows, 2);
+  for (size_t i = 0; i < disk.input_vertex.size(); ++i) out.row(disk.input_vertex[i]) = uv.row(Eigen::Index(i));
+  return out;
+}
+
 Result failed(Error error) {
   Result result;
   result.error = std::move(error);
@@ -126,6 +133,7 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
     metrics.seconds_solve = solver.seconds_solve;
     metrics.seconds = seconds_since(pass_start);
     result.passes.push_back(metrics);
+    if (options.pass_uv) options.pass_uv(pass, input_rows(disk, uv, V.rows()));
 
     const std::pair<int, double> this_rank = rank(stretch);
     if (pass == 0 || this_rank < best_rank) {
@@ -141,14 +149,10 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
 
   if (fit_into_unit_square(best_uv))
     result.notes.push_back("negative weights put vertices outside the boundary: the map was scaled into [0,1]^2");
-  // Back to the input's rows; unreferenced vertices get zeros.
-  result.uv = Eigen::MatrixXd::Zero(V.rows(), 2);
+  result.uv = input_rows(disk, best_uv, V.rows());
   result.vertex_stretch = Eigen::VectorXd::Zero(V.rows());
   const Eigen::VectorXd sigma = vertex_stretch(disk.F, n, best_stretch);
-  for (int i = 0; i < n; ++i) {
-    result.uv.row(disk.input_vertex[size_t(i)]) = best_uv.row(i);
-    result.vertex_stretch(disk.input_vertex[size_t(i)]) = sigma(i);
-  }
+  for (int i = 0; i < n; ++i) result.vertex_stretch(disk.input_vertex[size_t(i)]) = sigma(i);
   result.face_stretch.resize(F.rows());
   const double inf = std::numeric_limits<double>::infinity();
   for (Eigen::Index f = 0; f < F.rows(); ++f)

@@ -24,6 +24,9 @@ struct Options {
   bool stop_when_stretch_rises = true;  // false forces all max_passes (benchmarks)
   // Called with a fraction in [0, 1] and the current stage; return false to cancel the run.
   std::function<bool(double fraction, const char* stage)> progress;
+  // Called after every pass with that pass's UV (rows as in V, unused rows 0), for callers that
+  // measure passes their own way: charts measure each pass over the real faces only.
+  std::function<void(int pass, const Eigen::MatrixXd& uv)> pass_uv;
 };
 
 // The paper's metrics of one parameterization (design.md section 2). Stretch values are

@@ -158,6 +158,10 @@ std::vector<std::string> chart_lines(const ChartsResult& result) {
                            i, c.faces, c.closed_holes, c.seam_length, c.l2_stretch, c.chosen_pass, c.passes - 1));
   }
   if (result.charts.size() > shown) lines.push_back(format("... and %zu more charts", result.charts.size() - shown));
+  for (const LayoutPass& lp : result.passes)
+    lines.push_back(format("pass %d over all charts (a chart that stopped counts with its kept pass): L2 stretch %.6g, "
+                           "flipped %d, degenerate %d",
+                           lp.pass, lp.l2_stretch, lp.flipped, lp.degenerate));
   const PassMetrics& p = result.layout;
   lines.push_back(format("%zu charts, seam length %.6g, coverage %.4f; whole layout: L2 stretch %.6g, Linf stretch %.6g, "
                          "edge distortion %.6g, angle distortion %.6g, area distortion %.6g, flipped %d, degenerate %d; "

@@ -143,6 +143,10 @@ void print_json(const Arguments& a, const Eigen::MatrixXd& V, const Eigen::Matri
         << ", \"seam_length\": " << number(ch.seam_length) << ", \"l2_stretch\": " << number(ch.l2_stretch)
         << ", \"chosen_pass\": " << ch.chosen_pass << ", \"passes\": " << ch.passes << "}";
     }
+    o << "],\n \"layout_passes\": [";
+    for (size_t i = 0; i < c.passes.size(); ++i)
+      o << (i ? ", " : "") << "{\"pass\": " << c.passes[i].pass << ", \"l2_stretch\": " << number(c.passes[i].l2_stretch)
+        << ", \"flipped\": " << c.passes[i].flipped << ", \"degenerate\": " << c.passes[i].degenerate << "}";
     o << "]";
   }
   o << ",\n \"seconds_total\": " << number(c.seconds_total) << ", \"notes\": [";
@@ -168,6 +172,9 @@ void print_charts_table(const ChartsResult& c) {
     std::printf("%5zu %6d %13d %12.4g %11.4f %10d\n", i, ch.faces, ch.closed_holes, ch.seam_length, ch.l2_stretch,
                 ch.chosen_pass);
   }
+  for (const LayoutPass& lp : c.passes)
+    std::printf("pass %d over all charts: L2 stretch %.4f, flips %d, zero-area %d\n", lp.pass, lp.l2_stretch, lp.flipped,
+                lp.degenerate);
   const PassMetrics& p = c.layout;
   std::printf("%zu charts, seam length %.4g, coverage %.4f; whole layout: L2 stretch %.4f, Linf stretch %.4g, edge %.4f, "
               "angle %.4f, area %.4f, flips %d, zero-area %d; %.3f s\n",

@@ -189,6 +189,48 @@ TEST(Charts, DisjointDisksGetOneChartEachAtTheSameTexelDensity) {
   EXPECT_NEAR(uv[big] / uv[1 - big], 4.0, 1e-9);
 }
 
+// Two copies of one curved disk: every pass over the whole mesh has the stretch of that pass of
+// the disk alone (stretch is normalized, so the copies' sizes do not matter).
+TEST(Charts, PassesOverTheWholeMeshOfTwoEqualDisksAreThoseOfOne) {
+  const testmesh::Mesh one = testmesh::hemisphere(8, 16);
+  testmesh::Mesh two;
+  two.V.resize(2 * one.V.rows(), 3);
+  two.F.resize(2 * one.F.rows(), 3);
+  two.V << one.V, (3 * one.V).rowwise() + Eigen::RowVector3d(10, 0, 0);
+  two.F << one.F, (one.F.array() + int(one.V.rows())).matrix();
+  const Result alone = parameterize(one.V, one.F);
+  const ChartsResult r = charts_of(two);
+  ASSERT_FALSE(r.error) << message(r.error);
+  ASSERT_EQ(r.charts.size(), 2u);
+  ASSERT_EQ(r.passes.size(), alone.passes.size());
+  for (size_t k = 0; k < alone.passes.size(); ++k) {
+    EXPECT_EQ(r.passes[k].pass, int(k));
+    EXPECT_NEAR(r.passes[k].l2_stretch, alone.passes[k].l2_stretch, 1e-9 * alone.passes[k].l2_stretch) << "pass " << k;
+    EXPECT_EQ(r.passes[k].flipped, 0);
+  }
+}
+
+// The layout's L2 stretch two ways: measured on the packed layout, and from the charts' own
+// (kept) L2 stretch weighted by their 3D areas.
+TEST(Charts, LayoutStretchIsTheAreaWeightedMeanOfTheCharts) {
+  testmesh::Mesh m = testmesh::two_grids(6);
+  m.V.col(2) = (m.V.col(0).array() * 3).sin() * 0.3;  // curved, so the charts differ
+  m.V.bottomRows(m.V.rows() / 2).col(2) *= 2;
+  const ChartsResult r = charts_of(m);
+  ASSERT_FALSE(r.error) << message(r.error);
+  std::vector<double> area(r.charts.size(), 0.0);
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f) {
+    const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), c = m.V.row(m.F(f, 2));
+    area[size_t(r.face_chart[size_t(f)])] += 0.5 * (b - a).cross(c - a).norm();
+  }
+  double weighted = 0, total = 0;
+  for (size_t c = 0; c < r.charts.size(); ++c) {
+    weighted += area[c] * r.charts[c].l2_stretch * r.charts[c].l2_stretch;
+    total += area[c];
+  }
+  EXPECT_NEAR(r.layout.l2_stretch, std::sqrt(weighted / total), 1e-6 * r.layout.l2_stretch);
+}
+
 TEST(Charts, APackerThatFailsGivesItsOwnError) {
   const testmesh::Mesh m = testmesh::two_grids(4);
   ChartOptions options;
