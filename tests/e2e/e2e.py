@@ -599,17 +599,7 @@ def cmd_deleted(args):
     ET.SubElement(select, "Param", name="Inclusive", type="RichBool", value="true")
     ET.SubElement(script, "filter", name="Delete Selected Faces and Vertices")
     script.append(ET.parse(mlx(args)).getroot().find("filter"))
-    delete_mlx = os.path.join(args.work, "delete_then_lowstretch.mlx")
-    ET.ElementTree(script).write(delete_mlx)
-
-    mask = ["-m", "vt", "wt", "vq", "fq"]
-    out_plain = os.path.join(args.work, "plain_out.ply")
-    proc = meshlabserver(args.prefix, args.work, "plain.log", ["-i", plain, "-o", out_plain] + mask + ["-s", mlx(args)])
-    reference = check_result(check, args, "plain.ply", "square", proc, out_plain)
-
-    out_flap = os.path.join(args.work, "with_flap_out.ply")
-    proc = meshlabserver(args.prefix, args.work, "with_flap.log",
-                         ["-i", with_flap, "-o", out_flap] + mask + ["-s", delete_mlx])
+    reference, proc, out_flap = square_and_script(check, args, plain, with_flap, script)
     deleted = sum(1 for q in quality if q > 0)
     check(f"Deleted 10 faces, {deleted} vertices." in proc.stdout,
           "the script deleted the flap's 10 faces and 12 vertices before the filter ran")
@@ -623,16 +613,58 @@ def cmd_deleted(args):
     result = meshio.read_ply(out_flap)
     check(result.vertices() == reference.vertices() and result.faces() == reference.faces(),
           "same vertices and faces as the mesh without the flap")
+    check_same_output(check, result, reference, "as the mesh without the flap")
+    return check
+
+
+def square_and_script(check, args, reference_mesh, script_mesh, script):
+    """meshlabserver twice: the Square script alone on reference_mesh (checked like any run), and
+    `script` (a FilterScript element) on script_mesh. Returns the reference PLY (None if that
+    run failed), the second run's process and its output path."""
+    script_path = os.path.join(args.work, "script.mlx")
+    ET.ElementTree(script).write(script_path)
+    mask = ["-m", "vt", "wt", "vq", "fq"]
+    out_reference = os.path.join(args.work, "reference_out.ply")
+    proc = meshlabserver(args.prefix, args.work, "reference.log",
+                         ["-i", reference_mesh, "-o", out_reference] + mask + ["-s", mlx(args)])
+    reference = check_result(check, args, os.path.basename(reference_mesh), "square", proc, out_reference)
+    out = os.path.join(args.work, "script_out.ply")
+    proc = meshlabserver(args.prefix, args.work, "script.log", ["-i", script_mesh, "-o", out] + mask + ["-s", script_path])
+    return reference, proc, out
+
+
+def check_same_output(check, result, reference, what):
+    """Texture coordinates and quality written by the filter, equal in two PLY files."""
     for element, props in (("vertex", ("texture_u", "texture_v", "quality")), ("face", ("texcoord", "quality"))):
         for prop in props:
             check(result.elements[element].data.get(prop) == reference.elements[element].data.get(prop),
-                  f"same {element} {prop} as the mesh without the flap")
+                  f"same {element} {prop} {what}")
+
+
+def cmd_replace(args):
+    """Running the filter again replaces what the first run wrote: Circle then Square in one
+    meshlabserver script gives exactly the texcoords and quality of Square alone."""
+    check = Checks()
+    shutil.rmtree(args.work, ignore_errors=True)
+    os.makedirs(args.work)
+    vertices, faces = generate.wavy_grid(12)
+    mesh = os.path.join(args.work, "wavy_grid.off")
+    meshio.write_off(mesh, vertices, faces)
+    script = ET.Element("FilterScript")
+    for boundary in ("circle", "square"):
+        script.append(ET.parse(mlx(args, boundary)).getroot().find("filter"))
+    reference, proc, out_twice = square_and_script(check, args, mesh, mesh, script)
+    runs = set(re.findall(rf"{FILTER}: \d+ vertices, \d+ faces; boundary (\w+)", proc.stdout))
+    check(runs == {"circle", "square"}, f"the script ran the filter with both boundaries: {sorted(runs)}")
+    if not check(proc.returncode == 0 and os.path.isfile(out_twice), "the second run succeeds") or reference is None:
+        return check
+    check_same_output(check, meshio.read_ply(out_twice), reference, "after Circle then Square as after Square alone")
     return check
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("command", choices=("prefix", "disk", "bad", "deleted", "charts"))
+    parser.add_argument("command", choices=("prefix", "disk", "bad", "deleted", "charts", "replace"))
     parser.add_argument("--prefix", required=True, help="private MeshLab prefix")
     parser.add_argument("--plugin", help="libfilter_lowstretch.so under test")
     parser.add_argument("--resources", help="the repository's resources/ folder (the .mlx scripts)")
@@ -652,7 +684,8 @@ def main():
     if args.mesh and not os.path.isfile(args.mesh):
         print(f"FAILED: input mesh {args.mesh} does not exist")
         return 1
-    check = {"disk": cmd_disk, "bad": cmd_bad, "deleted": cmd_deleted, "charts": cmd_charts}[args.command](args)
+    check = {"disk": cmd_disk, "bad": cmd_bad, "deleted": cmd_deleted, "charts": cmd_charts,
+             "replace": cmd_replace}[args.command](args)
     print(f"{len(check.failed)} check(s) failed" if check.failed else "all checks passed")
     return 1 if check.failed else 0
 
