@@ -29,22 +29,23 @@ bool charts_can_fix(ErrorCode code) {
          code == ErrorCode::NotGenusZero;
 }
 
-// The used vertices moved into a unit box, as make_disk_mesh does, so that huge coordinates do
-// not overflow lengths and areas; `unit` converts lengths back to the input's units.
-Eigen::MatrixXd unit_box(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, double& unit) {
-  Eigen::RowVector3d low = Eigen::RowVector3d::Constant(kInf), high = -low;
+// The used vertices moved into make_disk_mesh's unit box, so that huge coordinates do not
+// overflow lengths and areas; `unit` converts lengths back to the input's units.
+Eigen::MatrixXd unit_box_of_used(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, double& unit) {
+  std::vector<char> used(static_cast<size_t>(V.rows()), 0);
+  std::vector<int> rows;
   for (Eigen::Index f = 0; f < F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      low = low.cwiseMin(V.row(F(f, k)) / 2);
-      high = high.cwiseMax(V.row(F(f, k)) / 2);
-    }
-  const Eigen::RowVector3d centre_half = low / 2 + high / 2;
-  const double extent = (high - low).maxCoeff();
-  const double divisor = extent > 0 ? extent : 1;
-  unit = 2 * divisor;
+    for (int k = 0; k < 3; ++k)
+      if (!used[size_t(F(f, k))]) {
+        used[size_t(F(f, k))] = 1;
+        rows.push_back(F(f, k));
+      }
+  Eigen::MatrixXd points(Eigen::Index(rows.size()), 3);
+  for (size_t i = 0; i < rows.size(); ++i) points.row(Eigen::Index(i)) = V.row(rows[i]);
+  const UnitBox box = unit_box(points);
+  unit = box.unit();
   Eigen::MatrixXd scaled = Eigen::MatrixXd::Zero(V.rows(), 3);
-  for (Eigen::Index f = 0; f < F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) scaled.row(F(f, k)) = (V.row(F(f, k)) / 2 - centre_half) / divisor;
+  for (int r : rows) scaled.row(r) = box.map(V.row(r));
   return scaled;
 }
 
@@ -234,7 +235,7 @@ ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi
   for (Eigen::Index f = 0; f < F.rows(); ++f) faces_of[size_t(component[size_t(f)])].push_back(int(f));
 
   double unit = 1;
-  const Eigen::MatrixXd unit_V = unit_box(V, F, unit);
+  const Eigen::MatrixXd unit_V = unit_box_of_used(V, F, unit);
   ChartsResult result;
   std::vector<SolvedChart> solved;
   std::vector<int> local_of(static_cast<size_t>(V.rows()), -1);

@@ -61,16 +61,9 @@ Error compact_vertices(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, DiskM
     if (!disk.V.row(i).allFinite()) ++non_finite;
   }
   if (non_finite) return {ErrorCode::NonFiniteCoordinates, non_finite, ""};
-  // Centred on the bounding box and scaled into [-1/2, 1/2]^3 (every measure the core takes is
-  // scale-invariant): finite but huge coordinates (1e200, DBL_MAX) would overflow edge lengths,
-  // areas and arc lengths to infinity and give NaN texture coordinates. Halves never overflow.
-  if (n > 0) {
-    const Eigen::RowVector3d low = disk.V.colwise().minCoeff() / 2, high = disk.V.colwise().maxCoeff() / 2;
-    const Eigen::RowVector3d centre_half = low / 2 + high / 2;  // a quarter of (min + max)
-    const double extent = (high - low).maxCoeff();               // half the largest side
-    if (extent > 0)
-      for (int i = 0; i < n; ++i) disk.V.row(i) = (disk.V.row(i) / 2 - centre_half) / extent;
-  }
+  // Huge coordinates would otherwise give NaN texture coordinates.
+  const UnitBox box = unit_box(disk.V);
+  for (int i = 0; i < n; ++i) disk.V.row(i) = box.map(disk.V.row(i));
   disk.F.resize(F.rows(), 3);
   for (Eigen::Index f = 0; f < F.rows(); ++f)
     for (int k = 0; k < 3; ++k) disk.F(f, k) = compact[size_t(F(f, k))];
@@ -214,6 +207,16 @@ void build_rings(const std::vector<int>& twin, DiskMesh& disk) {
 }
 
 }  // namespace
+
+UnitBox unit_box(const Eigen::MatrixXd& points) {
+  UnitBox box;
+  if (points.rows() == 0) return box;
+  const Eigen::RowVector3d low = points.colwise().minCoeff() / 2, high = points.colwise().maxCoeff() / 2;
+  box.centre_half = low / 2 + high / 2;
+  const double extent = (high - low).maxCoeff();
+  if (extent > 0) box.extent = extent;
+  return box;
+}
 
 Error make_disk_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, DiskMesh& disk) {
   if (Error e = check_indices(V, F)) return e;

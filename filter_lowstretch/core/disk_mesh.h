@@ -21,6 +21,17 @@ struct DiskMesh {
   std::vector<int> ring_start, ring;
 };
 
+// Centres the bounding box of `points` (rows) and scales it into [-1/2, 1/2]^3. Every measure the
+// core takes is scale-invariant, and finite but huge coordinates (1e200, DBL_MAX) would overflow
+// edge lengths, areas and arc lengths to infinity; the map works on halves, which never overflow.
+struct UnitBox {
+  Eigen::RowVector3d centre_half = Eigen::RowVector3d::Zero();  // a quarter of (min + max)
+  double extent = 1;                                             // half the largest side (1 if none)
+  Eigen::RowVector3d map(const Eigen::RowVector3d& p) const { return (p / 2 - centre_half) / extent; }
+  double unit() const { return 2 * extent; }  // one unit-box length in the input's units
+};
+UnitBox unit_box(const Eigen::MatrixXd& points);
+
 // Fills `disk` or returns the first problem found: indices, finiteness, edge manifoldness,
 // orientation, components, vertex manifoldness, boundary loops, genus, zero total area.
 Error make_disk_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, DiskMesh& disk);
