@@ -184,48 +184,31 @@ std::string failure_line(const std::string& message) { return std::string(kFilte
 std::vector<OutputValue> output_values(const ChartsResult& charts) {
   auto real = [](const char* name, double value) { return OutputValue{name, false, 0, value}; };
   auto integer = [](const char* name, int value) { return OutputValue{name, true, value, double(value)}; };
-  const std::vector<OutputValue> chart_values = {
+  // A disk reports its kept pass; charts report the whole layout, each chart having kept its own
+  // pass (kept_pass -1, passes summed over the charts, no single initial stretch).
+  const bool disk = charts.input_is_disk;
+  const PassMetrics& p = disk ? charts.disk.passes.at(size_t(charts.disk.chosen_pass)) : charts.layout;
+  int passes = int(charts.disk.passes.size());  // computed, including a rejected last one
+  if (!disk) {
+    passes = 0;
+    for (const Chart& c : charts.charts) passes += c.passes;
+  }
+  return {
+      real("l2_stretch", p.l2_stretch),
+      real("linf_stretch", p.linf_stretch),
+      real("edge_distortion", p.edge_distortion),
+      real("angle_distortion", p.angle_distortion),
+      real("area_distortion", p.area_distortion),
+      integer("flipped", p.flipped),
+      integer("degenerate", p.degenerate),
+      integer("kept_pass", disk ? p.pass : -1),
+      integer("passes", passes),
+      real("initial_l2_stretch", disk ? charts.disk.passes.front().l2_stretch : std::nan("")),
+      real("seconds", charts.seconds_total),
       integer("charts", int(charts.charts.size())),
       real("seam_length", charts.seam_length),
       real("coverage", charts.coverage),
   };
-  if (!charts.input_is_disk) {
-    const PassMetrics& p = charts.layout;
-    int passes = 0;
-    for (const Chart& c : charts.charts) passes += c.passes;
-    std::vector<OutputValue> values = {
-        real("l2_stretch", p.l2_stretch),
-        real("linf_stretch", p.linf_stretch),
-        real("edge_distortion", p.edge_distortion),
-        real("angle_distortion", p.angle_distortion),
-        real("area_distortion", p.area_distortion),
-        integer("flipped", p.flipped),
-        integer("degenerate", p.degenerate),
-        integer("kept_pass", -1),  // each chart kept its own
-        integer("passes", passes),
-        real("initial_l2_stretch", std::nan("")),
-        real("seconds", charts.seconds_total),
-    };
-    values.insert(values.end(), chart_values.begin(), chart_values.end());
-    return values;
-  }
-  const Result& result = charts.disk;
-  const PassMetrics& kept = result.passes.at(size_t(result.chosen_pass));
-  std::vector<OutputValue> values = {
-      real("l2_stretch", kept.l2_stretch),
-      real("linf_stretch", kept.linf_stretch),
-      real("edge_distortion", kept.edge_distortion),
-      real("angle_distortion", kept.angle_distortion),
-      real("area_distortion", kept.area_distortion),
-      integer("flipped", kept.flipped),
-      integer("degenerate", kept.degenerate),
-      integer("kept_pass", kept.pass),
-      integer("passes", int(result.passes.size())),  // computed, including a rejected last one
-      real("initial_l2_stretch", result.passes.front().l2_stretch),
-      real("seconds", result.seconds_total),
-  };
-  values.insert(values.end(), chart_values.begin(), chart_values.end());
-  return values;
 }
 
 QString checkerboard_path() {
