@@ -47,18 +47,14 @@ LaplacianSolver::LaplacianSolver(const DiskMesh& disk) : disk_(disk) {
   }
 }
 
-bool LaplacianSolver::solve(const std::vector<double>& weights, const Eigen::MatrixXd& boundary_uv,
-                            Eigen::MatrixXd& uv) {
+Eigen::MatrixXd LaplacianSolver::assemble(const std::vector<double>& weights, const Eigen::MatrixXd& boundary_uv,
+                                          Eigen::MatrixXd& uv) {
   const int n = int(disk_.V.rows());
-  const Eigen::Index rows = matrix_.rows();
   uv.resize(n, 2);
   for (size_t k = 0; k < disk_.boundary.size(); ++k) uv.row(disk_.boundary[k]) = boundary_uv.row(Eigen::Index(k));
-  if (rows == 0) return true;  // every vertex is on the boundary
-
-  Clock::time_point start = Clock::now();
   double* values = matrix_.valuePtr();
   std::fill(values, values + matrix_.nonZeros(), 0.0);
-  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(rows, 2);
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(matrix_.rows(), 2);
   for (int i = 0; i < n; ++i) {
     const int r = unknown_[size_t(i)];
     if (r < 0) continue;
@@ -69,6 +65,19 @@ bool LaplacianSolver::solve(const std::vector<double>& weights, const Eigen::Mat
       else rhs.row(r) += w * uv.row(disk_.ring[size_t(s)]);
     }
   }
+  return rhs;
+}
+
+void LaplacianSolver::scatter(const Eigen::MatrixXd& x, Eigen::MatrixXd& uv) const {
+  for (int i = 0; i < int(disk_.V.rows()); ++i)
+    if (unknown_[size_t(i)] >= 0) uv.row(i) = x.row(unknown_[size_t(i)]);
+}
+
+bool LaplacianSolver::solve(const std::vector<double>& weights, const Eigen::MatrixXd& boundary_uv,
+                            Eigen::MatrixXd& uv) {
+  Clock::time_point start = Clock::now();
+  const Eigen::MatrixXd rhs = assemble(weights, boundary_uv, uv);
+  if (matrix_.rows() == 0) return true;  // every vertex is on the boundary
   seconds_assembly = seconds_since(start);
   start = Clock::now();
   if (!analyzed_) {
@@ -87,8 +96,7 @@ bool LaplacianSolver::solve(const std::vector<double>& weights, const Eigen::Mat
   const Eigen::MatrixXd x = lu_.solve(rhs);
   seconds_solve = seconds_since(start);
   if (lu_.info() != Eigen::Success || !x.allFinite()) return false;
-  for (int i = 0; i < n; ++i)
-    if (unknown_[size_t(i)] >= 0) uv.row(i) = x.row(unknown_[size_t(i)]);
+  scatter(x, uv);
   return true;
 }
 

@@ -20,6 +20,13 @@ class LaplacianSolver {
   // every vertex of the disk, or false if the factorization fails.
   bool solve(const std::vector<double>& weights, const Eigen::MatrixXd& boundary_uv, Eigen::MatrixXd& uv);
 
+  // The steps of solve(), for studies of other solvers (tests/bench/reuse_study.cpp): fill the
+  // system (matrix() and the returned right-hand sides, one row per interior vertex) and put the
+  // boundary into uv; then write a solution's rows into uv.
+  Eigen::MatrixXd assemble(const std::vector<double>& weights, const Eigen::MatrixXd& boundary_uv, Eigen::MatrixXd& uv);
+  const Eigen::SparseMatrix<double>& matrix() const { return matrix_; }
+  void scatter(const Eigen::MatrixXd& x, Eigen::MatrixXd& uv) const;
+
   // Seconds the last solve() spent filling the matrix, factorizing and solving.
   double seconds_assembly = 0, seconds_factorization = 0, seconds_solve = 0;
 

@@ -20,6 +20,7 @@
 
 #include "core/boundary_map.h"
 #include "core/disk_mesh.h"
+#include "core/laplacian_solver.h"
 #include "core/ring_weights.h"
 #include "core/square_corners.h"
 #include "core/stretch.h"
@@ -35,34 +36,11 @@ namespace {
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-// The pass system over interior vertices (rows in vertex order), as the core's solver builds it.
+// One pass's system, as the core's solver assembles it.
 struct PassSystem {
   SparseMatrix A;
   Eigen::MatrixXd rhs;
 };
-PassSystem assemble(const DiskMesh& disk, const std::vector<int>& row, const std::vector<double>& w,
-                    const Eigen::MatrixXd& uv) {
-  const int rows = *std::max_element(row.begin(), row.end()) + 1;
-  PassSystem s;
-  s.rhs = Eigen::MatrixXd::Zero(rows, 2);
-  std::vector<Eigen::Triplet<double>> t;
-  for (int i = 0; i < int(disk.V.rows()); ++i) {
-    const int r = row[size_t(i)];
-    if (r < 0) continue;
-    double sum = 0;
-    for (int k = disk.ring_start[size_t(i)]; k < disk.ring_start[size_t(i) + 1]; ++k) {
-      const int j = disk.ring[size_t(k)];
-      sum += w[size_t(k)];
-      if (row[size_t(j)] >= 0) t.emplace_back(r, row[size_t(j)], -w[size_t(k)]);
-      else s.rhs.row(r) += w[size_t(k)] * uv.row(j);
-    }
-    t.emplace_back(r, r, sum);
-  }
-  s.A.resize(rows, rows);
-  s.A.setFromTriplets(t.begin(), t.end());
-  s.A.makeCompressed();
-  return s;
-}
 
 // Right-preconditioned GMRES without restart on one column: x is the start and the result.
 // Stops when |b - A x| <= tolerance |b|; returns the number of iterations.
@@ -130,14 +108,11 @@ void study(const std::string& path, int passes, double tolerance) {
   const Eigen::MatrixXd boundary_uv = square_boundary(disk, corners.corners, corners.bow_side);
   int fallbacks = 0;
   std::vector<double> weights = initial_weights(disk, InitialWeights::Floater, fallbacks);
-  std::vector<int> row(size_t(disk.V.rows()), -1);
-  int rows = 0;
-  for (int i = 0; i < int(disk.V.rows()); ++i)
-    if (!disk.is_boundary[size_t(i)]) row[size_t(i)] = rows++;
-  Eigen::MatrixXd uv = Eigen::MatrixXd::Zero(disk.V.rows(), 2);
-  for (size_t k = 0; k < disk.boundary.size(); ++k) uv.row(disk.boundary[k]) = boundary_uv.row(Eigen::Index(k));
+  LaplacianSolver solver(disk);
+  Eigen::MatrixXd uv;
 
-  std::printf("%s: %d interior rows, GMRES tolerance %.0e (relative residual)\n", path.c_str(), rows, tolerance);
+  std::printf("%s: %ld interior rows, GMRES tolerance %.0e (relative residual)\n", path.c_str(),
+              long(solver.matrix().rows()), tolerance);
   std::printf("  pass  refactor+solve | LU(0): its u/v, seconds, max UV diff | LU(k-1): its u/v, seconds, max UV diff\n");
   LU first, previous, current;
   for (LU* lu : {&first, &previous, &current}) {  // the core's settings (laplacian_solver.cpp)
@@ -146,7 +121,9 @@ void study(const std::string& path, int passes, double tolerance) {
   }
   Eigen::MatrixXd previous_x;
   for (int pass = 0; pass <= passes; ++pass) {
-    const PassSystem s = assemble(disk, row, weights, uv);
+    PassSystem s;
+    s.rhs = solver.assemble(weights, boundary_uv, uv);
+    s.A = solver.matrix();
     if (pass == 0) current.analyzePattern(s.A);
     Clock::time_point t = Clock::now();
     current.factorize(s.A);
@@ -166,8 +143,7 @@ void study(const std::string& path, int passes, double tolerance) {
     // cost is not counted; it is what "LU(k-1)" would have had for free).
     previous.compute(s.A);
     previous_x = x;
-    for (int i = 0; i < int(disk.V.rows()); ++i)
-      if (row[size_t(i)] >= 0) uv.row(i) = x.row(row[size_t(i)]);
+    solver.scatter(x, uv);
     reweight(disk, vertex_stretch(disk.F, int(disk.V.rows()), face_stretch(disk.V, disk.F, uv)), 1.0, weights);
   }
 }
