@@ -5,36 +5,23 @@ chart, flips, coverage of the unit square, seconds.
 
 usage: charts_table.py LOWSTRETCH MESH... [-- EXTRA lowstretch ARGUMENTS]
 """
-import json
 import os
-import subprocess
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "bench"))
+from tool_table import l2, print_table  # noqa: E402
 
-def main():
-    args = sys.argv[1:]
-    extra = []
-    if "--" in args:
-        extra = args[args.index("--") + 1:]
-        args = args[:args.index("--")]
-    tool, meshes = args[0], args[1:]
-    print("| mesh | V | F | charts | holes closed | seam length | L2 stretch | worst chart L2 | flips | coverage | seconds |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
-    for mesh in meshes:
-        run = subprocess.run([tool, mesh, "--non-disk", "charts", "--json"] + extra, capture_output=True, text=True)
-        name = os.path.basename(mesh)
-        if run.returncode != 0:
-            print(f"| {name} | rejected: {run.stderr.strip().split(': ', 2)[-1]} ||||||||||")
-            continue
-        d = json.loads(run.stdout)
-        layout = d["layout"]
-        l2 = lambda x: "inf" if x is None else f"{x:.4f}"
-        worst = max((c["l2_stretch"] for c in d["charts"]), key=lambda x: float("inf") if x is None else x)
-        holes = sum(c["closed_holes"] for c in d["charts"])
-        print(f"| {name} | {d['vertices']} | {d['faces']} | {d['chart_count']} | {holes} | {d['seam_length']:.4g} | "
-              f"{l2(layout['l2_stretch'])} | {l2(worst)} | {layout['flipped']} | {d['coverage']:.4f} | "
-              f"{d['seconds_total']:.3f} |")
+
+def row(d):
+    layout = d["layout"]
+    worst = max((c["l2_stretch"] for c in d["charts"]), key=lambda x: float("inf") if x is None else x)
+    holes = sum(c["closed_holes"] for c in d["charts"])
+    return [str(d["vertices"]), str(d["faces"]), str(d["chart_count"]), str(holes), f"{d['seam_length']:.4g}",
+            l2(layout["l2_stretch"]), l2(worst), str(layout["flipped"]), f"{d['coverage']:.4f}",
+            f"{d['seconds_total']:.3f}"]
 
 
 if __name__ == "__main__":
-    main()
+    print_table(["mesh", "V", "F", "charts", "holes closed", "seam length", "L2 stretch", "worst chart L2", "flips",
+                 "coverage", "seconds"], ["--non-disk", "charts"], row,
+                rejected_text=lambda stderr: stderr.split(": ", 2)[-1])
