@@ -1,6 +1,20 @@
 #include "laplacian_solver.h"
 
+#include <algorithm>
 #include <chrono>
+#include <system_error>
+#include <thread>
+
+// amgcl's CRS-tuple adapter uses boost::begin and boost::tuple without including them.
+#include <boost/range.hpp>
+#include <boost/tuple/tuple.hpp>
+#include <amgcl/adapter/crs_tuple.hpp>
+#include <amgcl/amg.hpp>
+#include <amgcl/backend/builtin.hpp>
+#include <amgcl/coarsening/smoothed_aggregation.hpp>
+#include <amgcl/make_solver.hpp>
+#include <amgcl/relaxation/ilu0.hpp>
+#include <amgcl/solver/bicgstab.hpp>
 
 namespace lowstretch {
 
@@ -8,15 +22,27 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// Position of entry (row, col) in the value array of a compressed column-major matrix.
-int value_index(const Eigen::SparseMatrix<double>& A, int row, int col) {
+using Backend = amgcl::backend::builtin<double>;
+using AmgSolver = amgcl::make_solver<
+    amgcl::amg<Backend, amgcl::coarsening::smoothed_aggregation, amgcl::relaxation::ilu0>,
+    amgcl::solver::bicgstab<Backend>>;
+
+// Position of entry (row, col) in the value array of a compressed row-major matrix.
+int value_index(const Eigen::SparseMatrix<double, Eigen::RowMajor, int>& A, int row, int col) {
   const int* inner = A.innerIndexPtr();
-  const int begin = A.outerIndexPtr()[col], end = A.outerIndexPtr()[col + 1];
-  return int(std::lower_bound(inner + begin, inner + end, row) - inner);
+  const int begin = A.outerIndexPtr()[row], end = A.outerIndexPtr()[row + 1];
+  return int(std::lower_bound(inner + begin, inner + end, col) - inner);
+}
+
+double relative_residual(const Eigen::SparseMatrix<double, Eigen::RowMajor, int>& A, const Eigen::VectorXd& b,
+                         const Eigen::VectorXd& x) {
+  const double scale = b.norm();
+  const double r = (b - A * x).norm();
+  return scale > 0 ? r / scale : r;
 }
 }  // namespace
 
-LaplacianSolver::LaplacianSolver(const DiskMesh& disk) : disk_(disk) {
+LaplacianSolver::LaplacianSolver(const DiskMesh& disk, const SolverOptions& options) : disk_(disk), options_(options) {
   const int n = int(disk.V.rows());
   unknown_.assign(size_t(n), -1);
   int rows = 0;
@@ -47,6 +73,12 @@ LaplacianSolver::LaplacianSolver(const DiskMesh& disk) : disk_(disk) {
   }
 }
 
+struct LaplacianSolver::Amg : AmgSolver {
+  using AmgSolver::AmgSolver;
+};
+
+LaplacianSolver::~LaplacianSolver() = default;
+
 Eigen::MatrixXd LaplacianSolver::assemble(const std::vector<double>& weights, const Eigen::MatrixXd& boundary_uv,
                                           Eigen::MatrixXd& uv) {
   const int n = int(disk_.V.rows());
@@ -68,34 +100,122 @@ Eigen::MatrixXd LaplacianSolver::assemble(const std::vector<double>& weights, co
   return rhs;
 }
 
+Eigen::MatrixXd LaplacianSolver::interior_rows(const Eigen::MatrixXd& uv) const {
+  Eigen::MatrixXd x = Eigen::MatrixXd::Zero(matrix_.rows(), 2);
+  if (uv.rows() != disk_.V.rows() || uv.cols() != 2 || !uv.allFinite()) return x;
+  for (int i = 0; i < int(disk_.V.rows()); ++i)
+    if (unknown_[size_t(i)] >= 0) x.row(unknown_[size_t(i)]) = uv.row(i);
+  return x;
+}
+
 void LaplacianSolver::scatter(const Eigen::MatrixXd& x, Eigen::MatrixXd& uv) const {
   for (int i = 0; i < int(disk_.V.rows()); ++i)
     if (unknown_[size_t(i)] >= 0) uv.row(i) = x.row(unknown_[size_t(i)]);
 }
 
-bool LaplacianSolver::solve(const std::vector<double>& weights, const Eigen::MatrixXd& boundary_uv,
-                            Eigen::MatrixXd& uv) {
+// u and v on one thread each: a hierarchy keeps per-level work vectors, so two concurrent solves
+// need two hierarchies; building both at once costs the wall time of one. A later pass first
+// tries the hierarchy of an earlier one (its matrix differs only in values) and builds a new one
+// only when that takes too many iterations.
+bool LaplacianSolver::solve_amg(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& x) {
+  const int n = int(matrix_.rows());
+  const int* ptr = matrix_.outerIndexPtr();
+  auto system = boost::make_tuple(size_t(n), boost::make_iterator_range(ptr, ptr + n + 1),
+                                  boost::make_iterator_range(matrix_.innerIndexPtr(), matrix_.innerIndexPtr() + ptr[n]),
+                                  boost::make_iterator_range(matrix_.valuePtr(), matrix_.valuePtr() + ptr[n]));
+  double setup[2] = {0, 0}, solving[2] = {0, 0};
+  size_t iterations[2] = {0, 0};
+  bool rebuilt[2] = {false, false};
+  bool failed[2] = {false, false};
+  auto solve_column = [&](int c) {
+    std::vector<double> b(rhs.col(c).data(), rhs.col(c).data() + n), u(x.col(c).data(), x.col(c).data() + n);
+    double estimate = 0;
+    try {  // amgcl throws on a zero pivot or a breakdown; the direct solve takes over then
+      Clock::time_point start = Clock::now();
+      if (amg_[c]) {
+        const Backend::matrix A(system);
+        boost::tie(iterations[c], estimate) = (*amg_[c])(A, b, u);
+        solving[c] = seconds_since(start);
+        std::copy(u.begin(), u.end(), x.col(c).data());
+        if (iterations[c] <= size_t(options_.stale_iteration_factor * fresh_iterations_[c] + 2)) return;
+      }
+      start = Clock::now();
+      AmgSolver::params prm;
+      prm.solver.tol = options_.tolerance;
+      prm.solver.maxiter = size_t(options_.max_iterations);
+      amg_[c].reset(new Amg(system, prm));
+      rebuilt[c] = true;
+      setup[c] = seconds_since(start);
+      start = Clock::now();
+      boost::tie(iterations[c], estimate) = (*amg_[c])(b, u);
+      fresh_iterations_[c] = int(iterations[c]);
+      std::copy(u.begin(), u.end(), x.col(c).data());
+      solving[c] += seconds_since(start);
+    } catch (...) {
+      amg_[c].reset();
+      failed[c] = true;
+    }
+  };
+  try {
+    std::thread v_thread(solve_column, 1);
+    solve_column(0);
+    v_thread.join();
+  } catch (const std::system_error&) {  // no thread to be had: one after the other
+    solve_column(0);
+    solve_column(1);
+  }
+  report_.seconds_setup = std::max(setup[0], setup[1]);
+  report_.seconds_solve = std::max(solving[0], solving[1]);
+  report_.iterations = int(std::max(iterations[0], iterations[1]));
+  report_.rebuilt = rebuilt[0] || rebuilt[1];
+  report_.relative_residual = std::max(relative_residual(matrix_, rhs.col(0), x.col(0)),
+                                       relative_residual(matrix_, rhs.col(1), x.col(1)));
+  return !failed[0] && !failed[1] && x.allFinite() && report_.iterations < options_.max_iterations &&
+         report_.relative_residual <= options_.residual_accepted;
+}
+
+bool LaplacianSolver::solve_direct(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& x) {
   Clock::time_point start = Clock::now();
-  const Eigen::MatrixXd rhs = assemble(weights, boundary_uv, uv);
-  if (matrix_.rows() == 0) return true;  // every vertex is on the boundary
-  seconds_assembly = seconds_since(start);
-  start = Clock::now();
+  const Eigen::SparseMatrix<double> column_major = matrix_;  // UMFPACK takes compressed columns
   if (!analyzed_) {
     // METIS leaves about half the fill of the default AMD ordering on these meshes. The matrix
     // is diagonally dominant, so the factorization is accurate without iterative refinement
     // (which would triple the cost of a solve).
     lu_.umfpackControl()(UMFPACK_ORDERING) = UMFPACK_ORDERING_METIS;
     lu_.umfpackControl()(UMFPACK_IRSTEP) = 0;
-    lu_.analyzePattern(matrix_);
+    lu_.analyzePattern(column_major);
     analyzed_ = true;
   }
-  lu_.factorize(matrix_);
-  seconds_factorization = seconds_since(start);
+  lu_.factorize(column_major);
+  report_.seconds_setup += seconds_since(start);
   if (lu_.info() != Eigen::Success) return false;
   start = Clock::now();
-  const Eigen::MatrixXd x = lu_.solve(rhs);
-  seconds_solve = seconds_since(start);
+  x = lu_.solve(rhs);
+  report_.seconds_solve += seconds_since(start);
   if (lu_.info() != Eigen::Success || !x.allFinite()) return false;
+  report_.relative_residual = std::max(relative_residual(matrix_, rhs.col(0), x.col(0)),
+                                       relative_residual(matrix_, rhs.col(1), x.col(1)));
+  return true;
+}
+
+bool LaplacianSolver::solve(const std::vector<double>& weights, const Eigen::MatrixXd& boundary_uv,
+                            Eigen::MatrixXd& uv) {
+  report_ = SolveReport();
+  const Clock::time_point start = Clock::now();
+  Eigen::MatrixXd x = interior_rows(uv);  // the previous pass: AMG's starting guess
+  const Eigen::MatrixXd rhs = assemble(weights, boundary_uv, uv);
+  report_.seconds_assembly = seconds_since(start);
+  if (matrix_.rows() == 0) return true;  // every vertex is on the boundary
+  report_.used = options_.method == LinearSolver::Amg && matrix_.rows() >= options_.amg_minimum_rows ? LinearSolver::Amg : LinearSolver::Direct;
+  if (report_.used == LinearSolver::Amg) {
+    if (solve_amg(rhs, x)) {
+      scatter(x, uv);
+      return true;
+    }
+    report_.used = LinearSolver::Direct;
+    report_.fell_back = true;
+  }
+  if (!solve_direct(rhs, x)) return false;
   scatter(x, uv);
   return true;
 }

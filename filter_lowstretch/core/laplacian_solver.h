@@ -1,6 +1,16 @@
 // The linear system of one pass: for every interior vertex i, sum_j w_ij (u_j - u_i) = 0 with
-// the boundary fixed. Every pass has the same sparsity pattern, so the solver builds it and
-// runs the symbolic analysis once; a pass only refills the values and factorizes.
+// the boundary fixed. Every pass has the same sparsity pattern, so the solver builds it once; a
+// pass only refills the values.
+//
+// Two ways to solve it (SolverOptions in solver_options.h):
+// - Amg: algebraic multigrid (amgcl: smoothed aggregation, ILU(0) smoothing) preconditioning
+//   BiCGStab, warm-started from the previous pass's solution, u and v on two threads. The matrix
+//   is an irreducibly diagonally dominant M-matrix for positive weights, the ideal case for AMG,
+//   and it needs no fill, so time and memory grow linearly with the mesh.
+// - Direct: UMFPACK's sparse LU (METIS ordering, symbolic analysis once).
+// An AMG solve that does not converge, or whose true residual is too large, falls back to the
+// direct solve for that pass; the pass's SolveReport says so. Small systems are always solved
+// directly.
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/Sparse>
@@ -9,35 +19,52 @@
 #include <vector>
 
 #include "disk_mesh.h"
+#include "solver_options.h"
 
 namespace lowstretch {
 
+// What one solve() did, for the pass's metrics.
+struct SolveReport {
+  LinearSolver used = LinearSolver::Direct;  // Direct also when AMG fell back
+  bool fell_back = false;                    // AMG was asked for but did not converge
+  bool rebuilt = false;                      // a new multigrid hierarchy was built for this pass
+  int iterations = 0;                        // Krylov iterations, the larger of u and v
+  double relative_residual = 0;              // max over u, v of |A x - b| / |b|
+  double seconds_assembly = 0, seconds_setup = 0, seconds_solve = 0;
+};
+
 class LaplacianSolver {
  public:
-  explicit LaplacianSolver(const DiskMesh& disk);
+  LaplacianSolver(const DiskMesh& disk, const SolverOptions& options);
+  ~LaplacianSolver();
 
-  // weights: aligned with disk.ring; boundary_uv: rows follow disk.boundary. Returns UV for
-  // every vertex of the disk, or false if the factorization fails.
+  // weights: aligned with disk.ring; boundary_uv: rows follow disk.boundary. uv: on entry the
+  // previous pass's solution (the AMG's starting guess) or empty; on return UV for every vertex
+  // of the disk. Returns false if no solver could solve the system.
   bool solve(const std::vector<double>& weights, const Eigen::MatrixXd& boundary_uv, Eigen::MatrixXd& uv);
+  const SolveReport& report() const { return report_; }
 
-  // The steps of solve(), for studies of other solvers (tests/bench/reuse_study.cpp): fill the
-  // system (matrix() and the returned right-hand sides, one row per interior vertex) and put the
-  // boundary into uv; then write a solution's rows into uv.
-  Eigen::MatrixXd assemble(const std::vector<double>& weights, const Eigen::MatrixXd& boundary_uv, Eigen::MatrixXd& uv);
-  const Eigen::SparseMatrix<double>& matrix() const { return matrix_; }
-  void scatter(const Eigen::MatrixXd& x, Eigen::MatrixXd& uv) const;
-
-  // Seconds the last solve() spent filling the matrix, factorizing and solving.
-  double seconds_assembly = 0, seconds_factorization = 0, seconds_solve = 0;
 
  private:
+  using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
+  Eigen::MatrixXd assemble(const std::vector<double>& weights, const Eigen::MatrixXd& boundary_uv, Eigen::MatrixXd& uv);
+  Eigen::MatrixXd interior_rows(const Eigen::MatrixXd& uv) const;
+  void scatter(const Eigen::MatrixXd& x, Eigen::MatrixXd& uv) const;
+  bool solve_amg(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& x);
+  bool solve_direct(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& x);
+
   const DiskMesh& disk_;
-  std::vector<int> unknown_;             // compact vertex -> row of the system, -1 on the boundary
-  Eigen::SparseMatrix<double> matrix_;   // column-major, as UMFPACK takes it
-  std::vector<int> slot_to_value_;       // ring slot -> index in matrix_.valuePtr(), -1 for boundary
-  std::vector<int> diagonal_value_;      // row -> index of its diagonal in valuePtr()
+  const SolverOptions options_;
+  std::vector<int> unknown_;        // compact vertex -> row of the system, -1 on the boundary
+  RowMatrix matrix_;                // row r: the equation of one interior vertex
+  std::vector<int> slot_to_value_;  // ring slot -> index in matrix_.valuePtr(), -1 for boundary
+  std::vector<int> diagonal_value_; // row -> index of its diagonal in valuePtr()
   Eigen::UmfPackLU<Eigen::SparseMatrix<double>> lu_;
   bool analyzed_ = false;
+  SolveReport report_;
+  struct Amg;                        // amgcl's solver, kept out of this header
+  std::unique_ptr<Amg> amg_[2];      // one hierarchy for u, one for v
+  int fresh_iterations_[2] = {0, 0}; // iterations right after the last build
 };
 
 }  // namespace lowstretch

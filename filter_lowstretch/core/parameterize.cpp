@@ -27,6 +27,11 @@ Error check_options(const Options& o) {
     return {ErrorCode::InvalidOption, 0, "the exponent must be in (0, 1], got " + std::to_string(o.exponent)};
   if (o.max_passes < 0)
     return {ErrorCode::InvalidOption, 0, "max passes must be 0 or more, got " + std::to_string(o.max_passes)};
+  const SolverOptions& s = o.solver;
+  if (!(s.tolerance > 0 && s.tolerance < 1 && s.residual_accepted >= s.tolerance && s.max_iterations > 0 &&
+        s.stale_iteration_factor >= 0 && s.amg_minimum_rows >= 1))
+    return {ErrorCode::InvalidOption, 0, "the multigrid solver's settings are out of range (tolerance in (0, 1), "
+                                         "accepted residual at least the tolerance, at least one iteration)"};
   return {};
 }
 
@@ -108,7 +113,7 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
                            " interior vertices have a degenerate one-ring (zero-length edges or zero-area "
                            "triangles): uniform weights used there");
 
-  LaplacianSolver solver(disk);
+  LaplacianSolver solver(disk, options.solver);
   const SurfaceReference reference = surface_reference(disk);
   const int n = int(disk.V.rows());
   Eigen::MatrixXd uv, best_uv;
@@ -128,9 +133,14 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
     PassMetrics metrics = measure(disk, uv, stretch, reference);
     metrics.pass = pass;
     metrics.seconds_metrics = seconds_since(phase);
-    metrics.seconds_assembly = reweighting + solver.seconds_assembly;
-    metrics.seconds_factorization = solver.seconds_factorization;
-    metrics.seconds_solve = solver.seconds_solve;
+    const SolveReport& solved = solver.report();
+    metrics.seconds_assembly = reweighting + solved.seconds_assembly;
+    metrics.seconds_factorization = solved.seconds_setup;
+    metrics.seconds_solve = solved.seconds_solve;
+    metrics.solver = solved.used;
+    metrics.solver_fell_back = solved.fell_back;
+    metrics.solver_iterations = solved.iterations;
+    metrics.solver_residual = solved.relative_residual;
     metrics.seconds = seconds_since(pass_start);
     result.passes.push_back(metrics);
     if (options.pass_uv) options.pass_uv(pass, input_rows(disk, uv, V.rows()));
@@ -147,6 +157,11 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
     }
   }
 
+  int fell_back = 0;
+  for (const PassMetrics& p : result.passes) fell_back += p.solver_fell_back;
+  if (fell_back > 0)
+    result.notes.push_back("multigrid did not converge in " + std::to_string(fell_back) + " of " +
+                           std::to_string(result.passes.size()) + " passes: the sparse LU solved them");
   if (fit_into_unit_square(best_uv))
     result.notes.push_back("negative weights put vertices outside the boundary: the map was scaled into [0,1]^2");
   result.uv = input_rows(disk, best_uv, V.rows());

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "error.h"
+#include "solver_options.h"
 
 namespace lowstretch {
 
@@ -22,6 +23,7 @@ struct Options {
   double exponent = 1.0;  // eta in (0, 1]: weights are divided by sigma_j^eta each pass
   int max_passes = 10;    // 0: U0 only; 1: U0 and U1
   bool stop_when_stretch_rises = true;  // false forces all max_passes (benchmarks)
+  SolverOptions solver;  // how each pass is solved (solver_options.h)
   // Called with a fraction in [0, 1] and the current stage; return false to cancel the run.
   std::function<bool(double fraction, const char* stage)> progress;
   // Called after every pass with that pass's UV (rows as in V, unused rows 0), for callers that
@@ -39,9 +41,13 @@ struct PassMetrics {
   int degenerate = 0;  // parameter triangles with zero area
   double seconds = 0;  // wall time of this pass (weights, solve, metrics), split into:
   double seconds_assembly = 0;       // reweighting and filling the matrix
-  double seconds_factorization = 0;  // numeric factorization (or preconditioner setup)
+  double seconds_factorization = 0;  // numeric factorization or multigrid setup
   double seconds_solve = 0;          // solving for u and v
   double seconds_metrics = 0;        // stretch and distortion metrics
+  LinearSolver solver = LinearSolver::Direct;  // what solved this pass
+  bool solver_fell_back = false;     // multigrid did not converge: the direct solve took over
+  int solver_iterations = 0;         // multigrid-preconditioned BiCGStab iterations (u or v, the larger)
+  double solver_residual = 0;        // relative residual |A x - b| / |b| of the solution
 };
 
 struct Result {

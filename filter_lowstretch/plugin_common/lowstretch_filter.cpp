@@ -135,13 +135,19 @@ std::string header_line(int vertices, int faces, const ChartOptions& charts) {
 
 namespace {
 
+// "multigrid, 8 iterations", "direct", or "direct (multigrid did not converge)".
+std::string solver_text(const PassMetrics& p) {
+  if (p.solver == LinearSolver::Amg) return format("multigrid, %d iterations", p.solver_iterations);
+  return p.solver_fell_back ? "direct (multigrid did not converge)" : "direct";
+}
+
 std::vector<std::string> disk_lines(const Result& result) {
   std::vector<std::string> lines;
   for (const PassMetrics& p : result.passes)
     lines.push_back(format("pass %d: L2 stretch %.6g, Linf stretch %.6g, edge distortion %.6g, angle distortion %.6g, "
-                           "area distortion %.6g, flipped %d, degenerate %d, %.3f s",
+                           "area distortion %.6g, flipped %d, degenerate %d, %.3f s, %s",
                            p.pass, p.l2_stretch, p.linf_stretch, p.edge_distortion, p.angle_distortion,
-                           p.area_distortion, p.flipped, p.degenerate, p.seconds));
+                           p.area_distortion, p.flipped, p.degenerate, p.seconds, solver_text(p).c_str()));
   const PassMetrics& kept = result.passes.at(size_t(result.chosen_pass));
   lines.push_back(format("kept pass %d (L2 stretch %.6g); stop reason: %s; total %.3f s", kept.pass, kept.l2_stretch,
                          to_string(result.stop_reason), result.seconds_total));

@@ -23,11 +23,14 @@ using namespace lowstretch;
 const char* kUsage =
     "usage: lowstretch INPUT [-o OUTPUT.obj|.ply] [--boundary square|circle|natural]\n"
     "                  [--weights floater|meanvalue|harmonic] [--exponent E] [--max-passes N]\n"
-    "                  [--all-passes] [--non-disk reject|charts] [--json] [--svg UV.svg]\n"
+    "                  [--all-passes] [--solver amg|direct] [--non-disk reject|charts] [--json]\n"
+    "                  [--svg UV.svg]\n"
     "Reads OFF, OBJ or PLY; writes per-corner texture coordinates and stretch as quality.\n"
     "--non-disk charts parameterizes a mesh that is not a disk (holes, closed, handles, several\n"
     "parts) as disk charts packed into the unit square; reject (the default) refuses it.\n"
     "--all-passes runs max-passes passes even when the stretch stops falling (benchmarks).\n"
+    "--solver amg (the default) solves each pass by algebraic multigrid, falling back to the sparse\n"
+    "LU of --solver direct for a pass where it does not converge.\n"
     "Exit codes: 0 done, 1 bad arguments, 2 unreadable input, 3 mesh not usable, 4 cannot write.\n";
 
 enum Exit { kDone = 0, kBadArguments = 1, kUnreadable = 2, kRejected = 3, kCannotWrite = 4 };
@@ -54,7 +57,7 @@ std::string parse(int argc, char** argv, Arguments& a) {
     else if (arg == "--all-passes") a.charts.disk.stop_when_stretch_rises = false;
     else if (arg == "-h" || arg == "--help") return "help";
     else if ((arg == "-o" || arg == "--svg" || arg == "--boundary" || arg == "--weights" || arg == "--exponent" ||
-              arg == "--max-passes" || arg == "--non-disk") && !has_value) return arg + " needs a value";
+              arg == "--max-passes" || arg == "--non-disk" || arg == "--solver") && !has_value) return arg + " needs a value";
     else if (arg == "-o") a.output = value();
     else if (arg == "--svg") a.svg = value();
     else if (arg == "--non-disk") {
@@ -62,6 +65,12 @@ std::string parse(int argc, char** argv, Arguments& a) {
       if (v == "reject") a.charts.non_disk = NonDisk::Reject;
       else if (v == "charts") a.charts.non_disk = NonDisk::Charts;
       else return "--non-disk takes reject or charts, not '" + v + "'";
+    }
+    else if (arg == "--solver") {
+      const std::string v = value();
+      if (v == "amg") a.charts.disk.solver.method = LinearSolver::Amg;
+      else if (v == "direct") a.charts.disk.solver.method = LinearSolver::Direct;
+      else return "--solver takes amg or direct, not '" + v + "'";
     }
     else if (arg == "--boundary") {
       const std::string v = value();
@@ -116,7 +125,9 @@ std::string pass_json(const PassMetrics& p) {
     << ", \"angle_distortion\": " << number(p.angle_distortion) << ", \"area_distortion\": " << number(p.area_distortion)
     << ", \"flipped\": " << p.flipped << ", \"degenerate\": " << p.degenerate << ", \"seconds\": " << number(p.seconds)
     << ", \"seconds_assembly\": " << number(p.seconds_assembly) << ", \"seconds_factorization\": " << number(p.seconds_factorization)
-    << ", \"seconds_solve\": " << number(p.seconds_solve) << ", \"seconds_metrics\": " << number(p.seconds_metrics) << "}";
+    << ", \"seconds_solve\": " << number(p.seconds_solve) << ", \"seconds_metrics\": " << number(p.seconds_metrics)
+    << ", \"solver\": \"" << to_string(p.solver) << "\", \"solver_fell_back\": " << (p.solver_fell_back ? "true" : "false")
+    << ", \"solver_iterations\": " << p.solver_iterations << ", \"solver_residual\": " << number(p.solver_residual) << "}";
   return o.str();
 }
 
@@ -126,7 +137,8 @@ void print_json(const Arguments& a, const Eigen::MatrixXd& V, const Eigen::Matri
   std::ostringstream o;
   o << "{\"input\": " << quoted(a.input) << ", \"vertices\": " << V.rows() << ", \"faces\": " << F.rows()
     << ", \"boundary\": \"" << to_string(a.charts.disk.boundary) << "\", \"weights\": \"" << to_string(a.charts.disk.weights)
-    << "\", \"exponent\": " << number(a.charts.disk.exponent) << ", \"max_passes\": " << a.charts.disk.max_passes;
+    << "\", \"exponent\": " << number(a.charts.disk.exponent)
+    << ", \"solver\": \"" << to_string(a.charts.disk.solver.method) << "\", \"max_passes\": " << a.charts.disk.max_passes;
   if (c.input_is_disk) {
     const Result& r = c.disk;
     o << ",\n \"passes\": [";
@@ -156,11 +168,15 @@ void print_json(const Arguments& a, const Eigen::MatrixXd& V, const Eigen::Matri
 }
 
 void print_table(const Result& r) {
-  std::printf("pass   L2 stretch  Linf stretch   edge    angle    area   flips  zero-area  seconds\n");
-  for (const PassMetrics& p : r.passes)
-    std::printf("%4d %12.4f %12.4g %7.4f %7.4f %7.4f %7d %9d %8.3f%s\n", p.pass, p.l2_stretch, p.linf_stretch,
-                p.edge_distortion, p.angle_distortion, p.area_distortion, p.flipped, p.degenerate, p.seconds,
+  std::printf("pass   L2 stretch  Linf stretch   edge    angle    area   flips  zero-area  seconds  solver\n");
+  for (const PassMetrics& p : r.passes) {
+    char solver[32];  // "amg 7" (iterations), "direct", or "direct*" where multigrid fell back
+    if (p.solver == LinearSolver::Amg) std::snprintf(solver, sizeof solver, "amg %d", p.solver_iterations);
+    else std::snprintf(solver, sizeof solver, "direct%s", p.solver_fell_back ? "*" : "");
+    std::printf("%4d %12.4f %12.4g %7.4f %7.4f %7.4f %7d %9d %8.3f  %-7s%s\n", p.pass, p.l2_stretch, p.linf_stretch,
+                p.edge_distortion, p.angle_distortion, p.area_distortion, p.flipped, p.degenerate, p.seconds, solver,
                 p.pass == r.chosen_pass ? "  <- kept" : "");
+  }
   std::printf("kept pass %d (%s); %.3f s\n", r.chosen_pass, to_string(r.stop_reason), r.seconds_total);
   for (const std::string& note : r.notes) std::printf("note: %s\n", note.c_str());
 }

@@ -41,7 +41,7 @@ SYSTEM_LIB = "/usr/lib/x86_64-linux-gnu/meshlab"
 LIB_IN_PREFIX = "lib/x86_64-linux-gnu/meshlab"
 NUM = r"([-+0-9.eEinfa]+)"
 PASS_RE = re.compile(rf"pass (\d+): L2 stretch {NUM}, Linf stretch {NUM}, edge distortion {NUM}, "
-                     rf"angle distortion {NUM}, area distortion {NUM}, flipped (\d+), degenerate (\d+), {NUM} s")
+                     rf"angle distortion {NUM}, area distortion {NUM}, flipped (\d+), degenerate (\d+), {NUM} s, (multigrid, \d+ iterations|direct[^\n]*)")
 KEPT_RE = re.compile(rf"kept pass (\d+) \(L2 stretch {NUM}\); stop reason: (.+?); total {NUM} s")
 HEADER_RE = re.compile(rf"{FILTER}: (\d+) vertices, (\d+) faces;")
 FAIL_RE = re.compile(rf"{FILTER} failed: (.*)")

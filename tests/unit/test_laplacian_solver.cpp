@@ -1,0 +1,160 @@
+// The pass's linear solve: multigrid agrees with the direct LU pass for pass, its residual is
+// what it reports, and the direct solve takes over where multigrid cannot converge.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "core/boundary_map.h"
+#include "core/disk_mesh.h"
+#include "core/laplacian_solver.h"
+#include "core/parameterize.h"
+#include "core/ring_weights.h"
+#include "generated_meshes.h"
+
+using namespace lowstretch;
+
+namespace {
+
+// A tall cap of about 7,300 vertices (so above the direct-solve size): the reweighting
+// changes the weights strongly from pass to pass.
+testmesh::Mesh tall_cap() {
+  testmesh::Mesh m = testmesh::hemisphere(60, 120);
+  m.V.col(2) *= 2.5;
+  m.V.col(0) *= 1.5;
+  return m;
+}
+
+struct PassRun {
+  Result result;
+  std::vector<Eigen::MatrixXd> uv;  // every pass's map
+};
+
+PassRun run(const testmesh::Mesh& m, BoundaryShape boundary, const SolverOptions& solver) {
+  Options o;
+  o.boundary = boundary;
+  o.max_passes = 4;
+  o.stop_when_stretch_rises = false;
+  o.solver = solver;
+  PassRun r;
+  o.pass_uv = [&](int, const Eigen::MatrixXd& uv) { r.uv.push_back(uv); };
+  r.result = parameterize(m.V, m.F, o);
+  return r;
+}
+
+SolverOptions with(LinearSolver method) {
+  SolverOptions s;
+  s.method = method;
+  return s;
+}
+
+// sum_j w_ij (u_j - u_i) over every interior vertex, relative to the largest term: the
+// equations the solver was given, evaluated on its answer.
+double largest_relative_imbalance(const DiskMesh& disk, const std::vector<double>& w, const Eigen::MatrixXd& uv) {
+  double worst = 0;
+  for (Eigen::Index i = 0; i < disk.V.rows(); ++i) {
+    if (disk.is_boundary[size_t(i)]) continue;
+    Eigen::RowVector2d sum = Eigen::RowVector2d::Zero();
+    double scale = 0;
+    for (int s = disk.ring_start[size_t(i)]; s < disk.ring_start[size_t(i) + 1]; ++s) {
+      sum += w[size_t(s)] * (uv.row(disk.ring[size_t(s)]) - uv.row(i));
+      scale += w[size_t(s)];
+    }
+    worst = std::max(worst, sum.cwiseAbs().maxCoeff() / scale);
+  }
+  return worst;
+}
+
+}  // namespace
+
+TEST(LaplacianSolver, MultigridMatchesTheDirectSolveOnEveryPass) {
+  const testmesh::Mesh m = tall_cap();
+  for (BoundaryShape boundary : {BoundaryShape::Square, BoundaryShape::Circle}) {
+    const PassRun amg = run(m, boundary, with(LinearSolver::Amg));
+    const PassRun direct = run(m, boundary, with(LinearSolver::Direct));
+    ASSERT_FALSE(amg.result.error) << message(amg.result.error);
+    ASSERT_FALSE(direct.result.error) << message(direct.result.error);
+    ASSERT_EQ(amg.uv.size(), 5u);
+    ASSERT_EQ(direct.uv.size(), 5u);
+    for (size_t p = 0; p < amg.uv.size(); ++p) {
+      const PassMetrics& a = amg.result.passes[p];
+      EXPECT_EQ(a.solver, LinearSolver::Amg) << "pass " << p;
+      EXPECT_FALSE(a.solver_fell_back) << "pass " << p;
+      EXPECT_GT(a.solver_iterations, 0) << "pass " << p;
+      EXPECT_LE(a.solver_residual, SolverOptions().residual_accepted) << "pass " << p;
+      EXPECT_EQ(direct.result.passes[p].solver, LinearSolver::Direct);
+      EXPECT_LT((amg.uv[p] - direct.uv[p]).cwiseAbs().maxCoeff(), 1e-6) << to_string(boundary) << " pass " << p;
+      EXPECT_EQ(a.flipped, direct.result.passes[p].flipped) << "pass " << p;
+      EXPECT_NEAR(a.l2_stretch, direct.result.passes[p].l2_stretch, 1e-6) << "pass " << p;
+    }
+    EXPECT_EQ(amg.result.chosen_pass, direct.result.chosen_pass);
+  }
+}
+
+TEST(LaplacianSolver, ReportedResidualIsTheResidualOfTheSolution) {
+  const testmesh::Mesh m = tall_cap();
+  DiskMesh disk;
+  ASSERT_FALSE(make_disk_mesh(m.V, m.F, disk));
+  int fallbacks = 0;
+  const std::vector<double> w = initial_weights(disk, InitialWeights::Floater, fallbacks);
+  ASSERT_EQ(fallbacks, 0);
+  for (LinearSolver method : {LinearSolver::Amg, LinearSolver::Direct}) {
+    LaplacianSolver solver(disk, with(method));
+    Eigen::MatrixXd uv;
+    ASSERT_TRUE(solver.solve(w, circle_boundary(disk), uv));
+    EXPECT_EQ(solver.report().used, method);
+    const double imbalance = largest_relative_imbalance(disk, w, uv);
+    EXPECT_LT(imbalance, 1e-6) << to_string(method);
+    EXPECT_LE(solver.report().relative_residual, SolverOptions().residual_accepted) << to_string(method);
+    if (method == LinearSolver::Direct) EXPECT_LT(imbalance, 1e-11);
+  }
+}
+
+TEST(LaplacianSolver, DirectSolveTakesOverWhereMultigridDoesNotConverge) {
+  const testmesh::Mesh m = tall_cap();
+  SolverOptions starved = with(LinearSolver::Amg);
+  starved.max_iterations = 1;  // no pass converges in one BiCGStab iteration at 1e-8
+  const PassRun amg = run(m, BoundaryShape::Square, starved);
+  const PassRun direct = run(m, BoundaryShape::Square, with(LinearSolver::Direct));
+  ASSERT_FALSE(amg.result.error) << message(amg.result.error);
+  for (size_t p = 0; p < amg.uv.size(); ++p) {
+    EXPECT_TRUE(amg.result.passes[p].solver_fell_back) << "pass " << p;
+    EXPECT_EQ(amg.result.passes[p].solver, LinearSolver::Direct) << "pass " << p;
+    EXPECT_LT((amg.uv[p] - direct.uv[p]).cwiseAbs().maxCoeff(), 1e-12) << "pass " << p;
+  }
+  const auto& notes = amg.result.notes;
+  EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const std::string& n) {
+    return n.find("multigrid did not converge in 5 of 5 passes") != std::string::npos;
+  }));
+}
+
+TEST(LaplacianSolver, SmallSystemsAreSolvedDirectly) {
+  const testmesh::Mesh m = testmesh::grid(20);
+  const PassRun r = run(m, BoundaryShape::Square, with(LinearSolver::Amg));
+  ASSERT_FALSE(r.result.error) << message(r.result.error);
+  for (const PassMetrics& p : r.result.passes) {
+    EXPECT_EQ(p.solver, LinearSolver::Direct);
+    EXPECT_FALSE(p.solver_fell_back);
+  }
+  // Below the threshold multigrid still solves when asked to.
+  SolverOptions small = with(LinearSolver::Amg);
+  small.amg_minimum_rows = 1;
+  const PassRun forced = run(m, BoundaryShape::Square, small);
+  const PassRun direct = run(m, BoundaryShape::Square, with(LinearSolver::Direct));
+  for (size_t p = 0; p < forced.uv.size(); ++p) {
+    EXPECT_EQ(forced.result.passes[p].solver, LinearSolver::Amg);
+    EXPECT_LT((forced.uv[p] - direct.uv[p]).cwiseAbs().maxCoeff(), 1e-6);
+  }
+}
+
+TEST(LaplacianSolver, OutOfRangeSettingsAreRejected) {
+  const testmesh::Mesh m = testmesh::grid(5);
+  SolverOptions bad;
+  bad.tolerance = 0;
+  Options o;
+  o.solver = bad;
+  const Result r = parameterize(m.V, m.F, o);
+  EXPECT_EQ(r.error.code, ErrorCode::InvalidOption);
+}
