@@ -5,9 +5,9 @@ namespace lowstretch {
 namespace {
 std::string n(long long v) { return std::to_string(v); }
 std::string plural(long long v, const char* one, const char* many) { return n(v) + " " + (v == 1 ? one : many); }
-// The way out for the four topology problems that charts solve (charts.h).
-const char* const kChartsHint =
-    "choose charts for non-disk input (lowstretch --non-disk charts; filter parameter \"Non-disk input\": Make charts)";
+// The way out for the four topology problems that charts solve (charts.h); the caller names the
+// option its user knows (charts_would_help).
+const char* const kChartsHint = "parameterize it as charts";
 }  // namespace
 
 std::string message(const Error& e) {
@@ -55,6 +55,11 @@ std::string message(const Error& e) {
     case ErrorCode::Cancelled: return "cancelled";
   }
   return "unknown error";
+}
+
+bool charts_would_help(ErrorCode code) {
+  return code == ErrorCode::SeveralComponents || code == ErrorCode::Closed || code == ErrorCode::SeveralBoundaryLoops ||
+         code == ErrorCode::NotGenusZero;
 }
 
 const char* code_name(ErrorCode code) {

@@ -33,6 +33,9 @@ struct Error {
 
 // One line for a person: what was found and what to do about it.
 std::string message(const Error& error);
+// Whether parameterizing the mesh as charts (charts.h) gets past this error: the caller then adds
+// how its user asks for charts.
+bool charts_would_help(ErrorCode code);
 // A stable short name for scripts and JSON ("several_boundary_loops").
 const char* code_name(ErrorCode code);
 

@@ -177,30 +177,4 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
   return result;
 }
 
-const char* to_string(BoundaryShape shape) {
-  switch (shape) {
-    case BoundaryShape::Square: return "square";
-    case BoundaryShape::Circle: return "circle";
-    case BoundaryShape::Natural: return "natural";
-  }
-  return "?";
-}
-
-const char* to_string(InitialWeights weights) {
-  switch (weights) {
-    case InitialWeights::Floater: return "floater";
-    case InitialWeights::MeanValue: return "meanvalue";
-    case InitialWeights::Harmonic: return "harmonic";
-  }
-  return "?";
-}
-
-const char* to_string(StopReason reason) {
-  switch (reason) {
-    case StopReason::StretchRose: return "L2 stretch stopped falling";
-    case StopReason::MaxPasses: return "max passes reached";
-  }
-  return "?";
-}
-
 }  // namespace lowstretch

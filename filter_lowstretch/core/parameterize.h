@@ -9,13 +9,9 @@
 #include <vector>
 
 #include "error.h"
-#include "solver_options.h"
+#include "method_types.h"
 
 namespace lowstretch {
-
-enum class BoundaryShape { Square, Circle, Natural };
-enum class InitialWeights { Floater, MeanValue, Harmonic };
-enum class StopReason { StretchRose, MaxPasses };
 
 struct Options {
   BoundaryShape boundary = BoundaryShape::Square;
@@ -29,25 +25,6 @@ struct Options {
   // Called after every pass with that pass's UV (rows as in V, unused rows 0), for callers that
   // measure passes their own way: charts measure each pass over the real faces only.
   std::function<void(int pass, const Eigen::MatrixXd& uv)> pass_uv;
-};
-
-// The paper's metrics of one parameterization (design.md section 2). Stretch values are
-// normalized so that an isometry up to scale gives 1; a flipped triangle makes them infinite.
-struct PassMetrics {
-  int pass = 0;
-  double l2_stretch = 0, linf_stretch = 0;
-  double edge_distortion = 0, angle_distortion = 0, area_distortion = 0;
-  int flipped = 0;     // parameter triangles with negative area
-  int degenerate = 0;  // parameter triangles with zero area
-  double seconds = 0;  // wall time of this pass (weights, solve, metrics), split into:
-  double seconds_assembly = 0;       // reweighting and filling the matrix
-  double seconds_factorization = 0;  // numeric factorization or multigrid setup
-  double seconds_solve = 0;          // solving for u and v
-  double seconds_metrics = 0;        // stretch and distortion metrics
-  LinearSolver solver = LinearSolver::Direct;  // what solved this pass
-  bool solver_fell_back = false;     // multigrid did not converge: the direct solve took over
-  int solver_iterations = 0;         // multigrid-preconditioned BiCGStab iterations (u or v, the larger)
-  double solver_residual = 0;        // relative residual |A x - b| / |b| of the solution
 };
 
 struct Result {
@@ -67,9 +44,5 @@ struct Result {
 // V: #V x 3 vertex positions; F: #F x 3 vertex indices of counter-clockwise triangles.
 // Vertices that no face uses are ignored (their coordinates may be anything).
 Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Options& options = {});
-
-const char* to_string(BoundaryShape shape);
-const char* to_string(InitialWeights weights);
-const char* to_string(StopReason reason);
 
 }  // namespace lowstretch

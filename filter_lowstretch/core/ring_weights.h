@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "disk_mesh.h"
-#include "parameterize.h"
+#include "method_types.h"
 
 namespace lowstretch {
 

@@ -1,10 +1,10 @@
-// Stretch of a parameterization (Sander et al. 2001, as design.md section 2 restates it) and the
+// Stretch of a parameterization (Sander et al. 2001; METHOD.md section 2) and the
 // paper's distortion metrics.
 #pragma once
 #include <Eigen/Core>
 
 #include "disk_mesh.h"
-#include "parameterize.h"
+#include "method_types.h"
 
 namespace lowstretch {
 

@@ -113,6 +113,7 @@ Run run(const MeshType& m, const ChartOptions& options, const std::function<void
   }
   if (run.result.error) {
     run.error = message(run.result.error);
+    if (charts_would_help(run.result.error.code)) run.error += " (set \"Non-disk input\" to Make charts)";
     return run;
   }
   for (const std::string& line : result_lines(run.result)) log(line);

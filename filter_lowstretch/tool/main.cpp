@@ -227,7 +227,10 @@ int main(int argc, char** argv) {
 
   const ChartsResult result = parameterize_charts(V, F, args.charts, pack_charts_with_vcglib);
   if (result.error) {
-    std::cerr << "lowstretch: " << args.input << ": " << message(result.error) << "\n";
+    std::cerr << "lowstretch: " << args.input << ": " << message(result.error)
+              << (charts_would_help(result.error.code) ? " (--non-disk charts)" : "") << "\n";
+    // An option value that the core refuses is a bad argument, as the usage says.
+    if (result.error.code == ErrorCode::InvalidOption) { std::cerr << kUsage; return kBadArguments; }
     return kRejected;
   }
   if (args.json) print_json(args, V, F, result);

@@ -1,6 +1,8 @@
-// Speed benchmark (not a test): for each mesh, our passes with the time of each phase, a CHOLMOD
-// Cholesky factorization of the same sparsity pattern as a yardstick, and CGAL's iterative
-// authalic and mean value parameterizers, all measured in one run and reported as medians.
+// Speed benchmark (not a test): for each mesh, our passes with the time of each phase solved by
+// multigrid and by the direct LU side by side (with the largest UV difference between them and
+// what a fallback costs), a CHOLMOD Cholesky factorization of the same sparsity pattern as a
+// yardstick, and CGAL's iterative authalic and mean value parameterizers, all measured in one run
+// and reported as medians.
 //
 // usage: lowstretch_benchmark [--runs N] [--cgal-max-vertices N] [--passes N] MESH...
 #include <fcntl.h>
@@ -147,43 +149,82 @@ std::string benchmark_mesh(const std::string& path, int runs, int passes, long c
   const double cholmod = cholmod_factorization_seconds(disk, runs, analyze);
   std::printf("  CHOLMOD supernodal LLT of the pattern: analyze %.3f s, factorize %.3f s (median of %d)\n", analyze, cholmod, runs);
 
-  double total_stop = 0, total_forced = 0;
-  Result stop_rule;
-  for (bool forced : {false, true}) {
-    Options o;
-    o.max_passes = passes;
-    o.stop_when_stretch_rises = !forced;
-    std::vector<double> totals;
-    std::vector<std::vector<PassMetrics>> all;
-    Result r;
-    for (int k = 0; k < runs; ++k) {
-      r = parameterize(V, F, o);
-      if (r.error) { std::printf("  %s\n", message(r.error).c_str()); return ""; }
-      totals.push_back(r.seconds_total);
-      all.push_back(r.passes);
+  // Both solvers, each with the stop rule and with every pass forced; the largest UV difference
+  // of any pass between them, and whether they keep the same pass with the same flips.
+  struct SolverRun {
+    double stop = 0, forced = 0;
+    Result stop_rule, all_passes;
+    std::vector<Eigen::MatrixXd> uv;  // every forced pass's map
+  };
+  SolverRun run[2];
+  const LinearSolver methods[2] = {LinearSolver::Amg, LinearSolver::Direct};
+  for (int m = 0; m < 2; ++m)
+    for (bool forced : {false, true}) {
+      Options o;
+      o.max_passes = passes;
+      o.stop_when_stretch_rises = !forced;
+      o.solver.method = methods[m];
+      std::vector<double> totals;
+      std::vector<std::vector<PassMetrics>> all;
+      Result r;
+      for (int k = 0; k < runs; ++k) {
+        if (forced && k == 0) o.pass_uv = [&](int, const Eigen::MatrixXd& uv) { run[m].uv.push_back(uv); };
+        else o.pass_uv = nullptr;
+        r = parameterize(V, F, o);
+        if (r.error) { std::printf("  %s\n", message(r.error).c_str()); return ""; }
+        totals.push_back(r.seconds_total);
+        all.push_back(r.passes);
+      }
+      const double total = median(totals);
+      std::printf("  %s, max passes %d%s: %.3f s total (median of %d), %zu solves, kept pass %d, L2 %.4f, flips %d; %.2f x CHOLMOD\n",
+                  to_string(methods[m]), passes, forced ? " forced" : " with the stop rule", total, runs, r.passes.size(),
+                  r.chosen_pass, r.passes[size_t(r.chosen_pass)].l2_stretch, r.passes[size_t(r.chosen_pass)].flipped,
+                  total / cholmod);
+      (forced ? run[m].forced : run[m].stop) = total;
+      (forced ? run[m].all_passes : run[m].stop_rule) = r;
+      if (forced) continue;
+      std::printf("    pass  assembly  setup/LU   solve  metrics    total   L2 stretch  solver\n");
+      for (size_t p = 0; p < r.passes.size(); ++p) {
+        std::vector<double> a, f, sv, mt, t;
+        for (const auto& one : all)
+          if (p < one.size()) {
+            a.push_back(one[p].seconds_assembly);
+            f.push_back(one[p].seconds_factorization);
+            sv.push_back(one[p].seconds_solve);
+            mt.push_back(one[p].seconds_metrics);
+            t.push_back(one[p].seconds);
+          }
+        const PassMetrics& q = r.passes[p];
+        std::printf("    %4zu %9.3f %9.3f %7.3f %8.3f %8.3f %12.4f  %s %d%s\n", p, median(a), median(f), median(sv), median(mt),
+                    median(t), q.l2_stretch, to_string(q.solver), q.solver_iterations, q.solver_fell_back ? " (fell back)" : "");
+      }
     }
-    const double total = median(totals);
-    std::printf("  ours, max passes %d%s: %.3f s total (median of %d), %zu solves, kept pass %d, L2 %.4f, flips %d; %.2f x CHOLMOD\n",
-                passes, forced ? " forced" : " with the stop rule", total, runs, r.passes.size(), r.chosen_pass,
-                r.passes[size_t(r.chosen_pass)].l2_stretch, r.passes[size_t(r.chosen_pass)].flipped, total / cholmod);
-    (forced ? total_forced : total_stop) = total;
-    if (forced) continue;
-    stop_rule = r;
-    std::printf("    pass  assembly  factorize   solve  metrics    total   L2 stretch\n");
-    for (size_t p = 0; p < r.passes.size(); ++p) {
-      std::vector<double> a, f, s, m, t;
-      for (const auto& run : all)
-        if (p < run.size()) {
-          a.push_back(run[p].seconds_assembly);
-          f.push_back(run[p].seconds_factorization);
-          s.push_back(run[p].seconds_solve);
-          m.push_back(run[p].seconds_metrics);
-          t.push_back(run[p].seconds);
-        }
-      std::printf("    %4zu %9.3f %10.3f %7.3f %8.3f %8.3f %12.4f\n", p, median(a), median(f), median(s), median(m), median(t),
-                  r.passes[p].l2_stretch);
+  double largest_difference = 0;
+  for (size_t p = 0; p < std::min(run[0].uv.size(), run[1].uv.size()); ++p)
+    largest_difference = std::max(largest_difference, (run[0].uv[p] - run[1].uv[p]).cwiseAbs().maxCoeff());
+  int fallbacks = 0, most_iterations = 0, amg_passes = 0;
+  for (const Result* r : {&run[0].stop_rule, &run[0].all_passes})
+    for (const PassMetrics& p : r->passes) {
+      fallbacks += p.solver_fell_back;
+      amg_passes += p.solver == LinearSolver::Amg;
+      most_iterations = std::max(most_iterations, p.solver_iterations);
     }
-  }
+  const bool same_choice = run[0].stop_rule.chosen_pass == run[1].stop_rule.chosen_pass &&
+                           run[0].stop_rule.passes[size_t(run[0].stop_rule.chosen_pass)].flipped ==
+                               run[1].stop_rule.passes[size_t(run[1].stop_rule.chosen_pass)].flipped;
+  std::printf("  amg against direct: largest UV difference %.2e over %zu passes, same kept pass and flips: %s; "
+              "%d multigrid passes, at most %d iterations, %d fell back\n",
+              largest_difference, run[0].uv.size(), same_choice ? "yes" : "NO", amg_passes, most_iterations, fallbacks);
+  // What a fallback costs at worst: multigrid runs out of iterations in every pass (an
+  // unreachable tolerance), then the direct solve. One run.
+  Options starved;
+  starved.max_passes = passes;
+  starved.stop_when_stretch_rises = false;
+  starved.solver.tolerance = starved.solver.residual_accepted = 1e-30;
+  const Result worst = parameterize(V, F, starved);
+  const double fallback_seconds = worst.error ? 0 : worst.seconds_total;
+  std::printf("  every pass falling back (%d iterations, then the direct solve): %.3f s\n",
+              starved.solver.max_iterations, fallback_seconds);
 
   std::string mean_value = "skipped", authalic = "skipped";
   if (V.rows() > cgal_max_vertices) {
@@ -199,12 +240,14 @@ std::string benchmark_mesh(const std::string& path, int runs, int passes, long c
   }
   const double peak = peak_rss_mb();
   std::printf("  peak memory %.0f MB\n", peak);
-  const PassMetrics& kept = stop_rule.passes[size_t(stop_rule.chosen_pass)];
-  char row[512];
-  std::snprintf(row, sizeof row, "| %s | %ld | %zu (%d) | %.3f | %.3f | %.3f | %.1f | %.3f | %d | %.0f | %s | %s |",
-                base_name(path).c_str(), long(V.rows()), stop_rule.passes.size(), stop_rule.chosen_pass, total_stop,
-                total_forced, cholmod, total_forced / cholmod, kept.l2_stretch, kept.flipped, peak, mean_value.c_str(),
-                authalic.c_str());
+  const PassMetrics& kept = run[0].stop_rule.passes[size_t(run[0].stop_rule.chosen_pass)];
+  char row[768];
+  std::snprintf(row, sizeof row,
+                "| %s | %ld | %zu (%d) | %.3f | %.3f | %.3f | %.2f | %.3f | %.1f | %.1e | %s | %d / %d | %.2f | %.3f | %d | %.0f | %s | %s |",
+                base_name(path).c_str(), long(V.rows()), run[0].stop_rule.passes.size(), run[0].stop_rule.chosen_pass,
+                run[0].stop, run[0].forced, run[1].forced, run[0].forced / run[1].forced, cholmod,
+                run[0].forced / cholmod, largest_difference, same_choice ? "yes" : "NO", most_iterations, fallbacks,
+                fallback_seconds, kept.l2_stretch, kept.flipped, peak, mean_value.c_str(), authalic.c_str());
   return row;
 }
 
@@ -250,8 +293,10 @@ int main(int argc, char** argv) {
     if (!row.empty()) rows.push_back(row);
   }
   std::printf("\nSummary (seconds are medians of %d runs; CGAL cells: seconds, L2 stretch, flipped/zero-area):\n\n", runs);
-  std::printf("| mesh | V | solves (kept) | ours, stop rule | ours, %d passes forced | CHOLMOD | forced / CHOLMOD | L2 | flips | peak MB | CGAL mean value | CGAL iterative authalic |\n", passes);
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("| mesh | V | solves (kept) | amg, stop rule | amg, %d passes forced | direct, forced | amg / direct | CHOLMOD | amg / CHOLMOD "
+              "| largest UV difference | same kept pass and flips | most iterations / fallbacks | all passes falling back "
+              "| L2 | flips | peak MB | CGAL mean value | CGAL iterative authalic |\n", passes);
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const std::string& row : rows) std::printf("%s\n", row.c_str());
   return 0;
 }

@@ -31,8 +31,10 @@ class Gui:
     def start_xvfb(self):
         """Xvfb picks a free display itself and writes its number to a pipe (no race with other tests)."""
         read_end, write_end = os.pipe()
-        xvfb = subprocess.Popen(["Xvfb", "-displayfd", str(write_end), "-screen", "0", "1600x1000x24", "-nolisten", "tcp"],
-                                pass_fds=[write_end], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        xvfb = subprocess.Popen(["Xvfb", "-displayfd", str(write_end), "-screen", "0", "1600x1000x24", "-nolisten", "tcp",
+                                 "-noreset"],
+                                pass_fds=[write_end], stdout=subprocess.DEVNULL,
+                                stderr=open(os.path.join(self.work, "xvfb.log"), "w"))
         self.processes.append(xvfb)
         os.close(write_end)
         with os.fdopen(read_end) as pipe:
@@ -40,8 +42,9 @@ class Gui:
         if not display:
             raise RuntimeError("Xvfb did not start")
         self.env["DISPLAY"] = ":" + display
-        # Seen once under load: meshlab could not connect to the display Xvfb had just announced.
-        # Wait until the server answers a client before starting anything on it.
+        # Without -noreset the server resets whenever its last client disconnects (xdpyinfo below,
+        # the runner): a client that connects during the reset is refused, as meshlab was
+        # ("could not connect to display"). Wait until the server answers before starting anything.
         end = time.time() + 30
         while subprocess.run(["xdpyinfo"], env=self.env, capture_output=True).returncode != 0:
             if xvfb.poll() is not None or time.time() > end:

@@ -55,7 +55,7 @@ def venv_python(venv):
 
 def stretch(np, V, F, wedge_uv):
     """Per-face stretch sigma(T) and the L2 stretch of a parameterization, normalized as the core
-    does (design.md section 1 step 4), from 3D positions and per-wedge texcoords (3 rows per face)."""
+    does (filter_lowstretch/core/METHOD.md section 2), from 3D positions and per-wedge texcoords (3 rows per face)."""
     p1, p2, p3 = V[F[:, 0]], V[F[:, 1]], V[F[:, 2]]
     uv = wedge_uv.reshape(-1, 3, 2)
     s1, t1, s2, t2, s3, t3 = uv[:, 0, 0], uv[:, 0, 1], uv[:, 1, 0], uv[:, 1, 1], uv[:, 2, 0], uv[:, 2, 1]

@@ -84,7 +84,9 @@ check "unused NaN vertex in OBJ ignored" 0 "$work/unused_nan.obj" -o "$work/out.
 check "used NaN vertex in OBJ named" 3 "$work/used_nan.obj" -o "$work/out.ply"
 check "missing file" 2 "$work/nothing.off" -o "$work/out.ply"
 check "bad option" 1 "$work/disk.off" --boundary triangle -o "$work/out.ply"
-check "bad exponent" 3 "$work/disk.off" --exponent 2 -o "$work/out.ply"
+check "bad exponent" 1 "$work/disk.off" --exponent 2 -o "$work/out.ply"
+check "bad solver" 1 "$work/disk.off" --solver cg -o "$work/out.ply"
+check "direct solver" 0 "$work/disk.off" --solver direct -o "$work/out.ply"
 check "unwritable output" 4 "$work/disk.off" -o "$work/no/such/folder/out.ply"
 # An existing output stays untouched when the input is bad.
 echo keep >"$work/keep.ply"
