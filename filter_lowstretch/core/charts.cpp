@@ -136,19 +136,6 @@ SolvedChart scale_by_area(const ChartMesh& chart, const Result& r) {
   return solved;
 }
 
-// Normalized L2 stretch of a set of faces (infinite if one is flipped or degenerate).
-double l2_stretch_of(const FaceStretch& s, const std::vector<int>& faces) {
-  double weighted = 0, area_3d = 0, area_uv = 0;
-  for (int f : faces) {
-    if (!s.valid(f)) return kInf;
-    weighted += s.area_3d(f) * s.sigma(f) * s.sigma(f);
-    area_3d += s.area_3d(f);
-    area_uv += std::abs(s.area_uv(f));
-  }
-  if (!(area_3d > 0)) return kInf;
-  return std::sqrt(area_uv / area_3d) * std::sqrt(weighted / area_3d);
-}
-
 // One pass of one chart, over its real faces (the faces closing holes are not the mesh's).
 struct ChartPass {
   double area_3d = 0, l2_stretch = 0;
@@ -157,9 +144,7 @@ struct ChartPass {
 ChartPass measure_real_faces(const ChartMesh& chart, const Eigen::MatrixXd& uv) {
   const Eigen::Index real = Eigen::Index(chart.input_face.size());
   const FaceStretch s = face_stretch(chart.V, chart.F.topRows(real), uv);
-  std::vector<int> all(static_cast<size_t>(real));
-  for (int f = 0; f < int(real); ++f) all[size_t(f)] = f;
-  return {s.area_3d.sum(), l2_stretch_of(s, all), s.flipped, s.degenerate};
+  return {s.area_3d.sum(), l2_stretch(s), s.flipped, s.degenerate};
 }
 
 // L2 stretch of the whole layout from the charts' own: with every chart at one texel density,
@@ -328,7 +313,7 @@ ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi
     for (int k = 0; k < 3; ++k) used[size_t(F(f, k))] = 1;
   for (Eigen::Index v = 0; v < V.rows(); ++v)
     if (!used[size_t(v)]) result.vertex_stretch(v) = 0;
-  for (size_t c = 0; c < solved.size(); ++c) result.charts[c].l2_stretch = l2_stretch_of(s, faces_of[c]);
+  for (size_t c = 0; c < solved.size(); ++c) result.charts[c].l2_stretch = l2_stretch(s, faces_of[c]);
   result.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
   result.layout.seconds = result.seconds_total;
   return result;

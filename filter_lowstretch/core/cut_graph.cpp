@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "half_edges.h"
+#include "union_find.h"
 
 namespace lowstretch {
 
@@ -73,11 +74,6 @@ std::vector<std::array<int, 2>> path_between_far_vertices(const Eigen::MatrixXd&
   return path;
 }
 
-int find(std::vector<int>& parent, int x) {
-  while (parent[size_t(x)] != x) x = parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
-  return x;
-}
-
 }  // namespace
 
 std::vector<std::array<int, 2>> cut_graph(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
@@ -121,18 +117,13 @@ std::vector<std::array<int, 2>> cut_graph(const Eigen::MatrixXd& V, const Eigen:
   std::vector<size_t> order(candidates.size());
   std::iota(order.begin(), order.end(), size_t(0));
   std::stable_sort(order.begin(), order.end(), [&](size_t x, size_t y) { return length[x] > length[y]; });
-  std::vector<int> face_parent(size_t(G.rows()));
-  std::iota(face_parent.begin(), face_parent.end(), 0);
+  UnionFind faces(int(G.rows()));
 
   std::vector<char> cut(twin.size(), 0);
   auto mark = [&](int h) { cut[size_t(h)] = cut[size_t(twin[size_t(h)])] = 1; };
   for (size_t i : order) {
     const int h = candidates[i];
-    const int f = find(face_parent, h / 3), g = find(face_parent, twin[size_t(h)] / 3);
-    if (f != g) {
-      face_parent[size_t(f)] = g;
-      continue;
-    }
+    if (faces.unite(h / 3, twin[size_t(h)] / 3)) continue;
     mark(h);  // left over: its loop goes into the cut graph
     for (int v : {half_edge_tail(G, h), half_edge_head(G, h)})
       for (; tree.via[size_t(v)] >= 0; v = half_edge_tail(G, tree.via[size_t(v)])) mark(tree.via[size_t(v)]);

@@ -5,14 +5,11 @@
 #include <numeric>
 
 #include "half_edges.h"
+#include "union_find.h"
 
 namespace lowstretch {
 
 namespace {
-int find(std::vector<int>& parent, int x) {
-  while (parent[size_t(x)] != x) x = parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
-  return x;
-}
 uint64_t key(int a, int b) { return uint64_t(uint32_t(std::min(a, b))) << 32 | uint64_t(uint32_t(std::max(a, b))); }
 }  // namespace
 
@@ -24,21 +21,20 @@ CutMesh cut_along(const Eigen::MatrixXi& F, const std::vector<std::array<int, 2>
   // joined corners becomes one vertex.
   const int nh = int(3 * F.rows());
   const std::vector<int> twin = opposite_half_edges(F);
-  std::vector<int> parent(static_cast<size_t>(nh));
-  std::iota(parent.begin(), parent.end(), 0);
+  UnionFind corners(nh);
   for (int h = 0; h < nh; ++h) {
     const int t = twin[size_t(h)];
     if (t < h) continue;  // boundary, or seen from the other side
     if (std::binary_search(seam_keys.begin(), seam_keys.end(), key(half_edge_tail(F, h), half_edge_head(F, h))))
       continue;
-    parent[size_t(find(parent, h))] = find(parent, next_half_edge(t));  // corners at the tail of h
-    parent[size_t(find(parent, next_half_edge(h)))] = find(parent, t);  // corners at the head of h
+    corners.unite(h, next_half_edge(t));  // corners at the tail of h
+    corners.unite(next_half_edge(h), t);  // corners at the head of h
   }
   CutMesh cut;
   cut.F.resize(F.rows(), 3);
   std::vector<int> new_vertex(size_t(nh), -1);
   for (int h = 0; h < nh; ++h) {
-    int& v = new_vertex[size_t(find(parent, h))];
+    int& v = new_vertex[size_t(corners.find(h))];
     if (v < 0) {
       v = int(cut.original_vertex.size());
       cut.original_vertex.push_back(half_edge_tail(F, h));

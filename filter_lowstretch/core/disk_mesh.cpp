@@ -6,24 +6,13 @@
 #include <cstdint>
 #include <numeric>
 
+#include "boundary_loops.h"
+#include "half_edges.h"
+#include "union_find.h"
+
 namespace lowstretch {
 
 namespace {
-
-struct UnionFind {
-  std::vector<int> parent;
-  explicit UnionFind(int n) : parent(static_cast<size_t>(n)) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int x) {
-    while (parent[size_t(x)] != x) x = parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
-    return x;
-  }
-  void unite(int a, int b) { parent[size_t(find(a))] = find(b); }
-};
-
-// Half-edge h = 3 f + k runs from F(f, k) to F(f, (k + 1) % 3).
-int tail(const Eigen::MatrixXi& F, int h) { return F(h / 3, h % 3); }
-int head(const Eigen::MatrixXi& F, int h) { return F(h / 3, (h % 3 + 1) % 3); }
-int previous(int h) { return (h / 3) * 3 + (h % 3 + 2) % 3; }  // the half-edge ending at tail(h)
 
 Error check_indices(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
   const long long nv = V.rows(), m = F.rows();
@@ -71,15 +60,10 @@ Error compact_vertices(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, DiskM
 }
 
 // Pairs each half-edge with the opposite one (twin, -1 on the boundary) and lists every
-// undirected edge once. Sorting beats hashing at a million half-edges.
+// undirected edge once, counting the edges that are not manifold or not consistently oriented.
 Error pair_half_edges(const Eigen::MatrixXi& F, std::vector<int>& twin, DiskMesh& disk) {
   const int nh = int(3 * F.rows());
-  std::vector<std::pair<uint64_t, int>> keyed(static_cast<size_t>(nh));
-  for (int h = 0; h < nh; ++h) {
-    const uint64_t a = uint64_t(tail(F, h)), b = uint64_t(head(F, h));
-    keyed[size_t(h)] = {std::min(a, b) << 32 | std::max(a, b), h};
-  }
-  std::sort(keyed.begin(), keyed.end());
+  const std::vector<std::pair<uint64_t, int>> keyed = half_edges_by_edge(F);
   twin.assign(size_t(nh), -1);
   std::vector<std::pair<int, int>> edges;
   disk.edge_on_boundary.clear();
@@ -88,12 +72,12 @@ Error pair_half_edges(const Eigen::MatrixXi& F, std::vector<int>& twin, DiskMesh
     size_t e = s;
     while (e < keyed.size() && keyed[e].first == keyed[s].first) ++e;
     const int h0 = keyed[s].second;
-    edges.push_back({tail(F, h0), head(F, h0)});
+    edges.push_back({half_edge_tail(F, h0), half_edge_head(F, h0)});
     disk.edge_on_boundary.push_back(e - s == 1);
     if (e - s > 2) ++non_manifold;
     else if (e - s == 2) {
       const int h1 = keyed[s + 1].second;
-      if (tail(F, h0) == tail(F, h1)) ++misoriented;  // both run the same way
+      if (half_edge_tail(F, h0) == half_edge_tail(F, h1)) ++misoriented;  // both run the same way
       twin[size_t(h0)] = h1;
       twin[size_t(h1)] = h0;
     }
@@ -122,11 +106,11 @@ Error check_vertex_fans(const Eigen::MatrixXi& F, const std::vector<int>& twin, 
   const int nh = int(twin.size());
   UnionFind fans(nh);
   for (int h = 0; h < nh; ++h)
-    if (twin[size_t(previous(h))] >= 0) fans.unite(h, twin[size_t(previous(h))]);
+    if (twin[size_t(previous_half_edge(h))] >= 0) fans.unite(h, twin[size_t(previous_half_edge(h))]);
   std::vector<int> fan_of_vertex(size_t(n), -1);
   long long non_manifold = 0;
   for (int h = 0; h < nh; ++h) {
-    int& fan = fan_of_vertex[size_t(tail(F, h))];
+    int& fan = fan_of_vertex[size_t(half_edge_tail(F, h))];
     const int root = fans.find(h);
     if (fan == -1) fan = root;
     else if (fan != root && fan != -2) {
@@ -138,24 +122,11 @@ Error check_vertex_fans(const Eigen::MatrixXi& F, const std::vector<int>& twin, 
   return {};
 }
 
-// Follows the boundary half-edges (each boundary vertex has exactly one outgoing on a manifold).
 Error find_boundary_loop(const Eigen::MatrixXi& F, const std::vector<int>& twin, int n, std::vector<int>& loop) {
-  std::vector<int> next(size_t(n), -1);
-  for (int h = 0; h < int(twin.size()); ++h)
-    if (twin[size_t(h)] < 0) next[size_t(tail(F, h))] = head(F, h);
-  std::vector<char> visited(size_t(n), 0);
-  long long loops = 0;
-  loop.clear();
-  for (int i = 0; i < n; ++i) {
-    if (next[size_t(i)] < 0 || visited[size_t(i)]) continue;
-    ++loops;
-    for (int v = i; !visited[size_t(v)]; v = next[size_t(v)]) {
-      visited[size_t(v)] = 1;
-      if (loops == 1) loop.push_back(v);
-    }
-  }
-  if (loops == 0) return {ErrorCode::Closed, 0, ""};
-  if (loops > 1) return {ErrorCode::SeveralBoundaryLoops, loops, ""};
+  const std::vector<std::vector<int>> loops = boundary_loops(F, twin, n);
+  if (loops.empty()) return {ErrorCode::Closed, 0, ""};
+  if (loops.size() > 1) return {ErrorCode::SeveralBoundaryLoops, (long long)loops.size(), ""};
+  loop = loops.front();
   return {};
 }
 
@@ -178,10 +149,10 @@ void build_rings(const std::vector<int>& twin, DiskMesh& disk) {
   const Eigen::MatrixXi& F = disk.F;
   const int n = int(disk.V.rows()), nh = int(twin.size());
   std::vector<int> corner_start(size_t(n) + 1, 0), corner(static_cast<size_t>(nh));
-  for (int h = 0; h < nh; ++h) ++corner_start[size_t(tail(F, h)) + 1];
+  for (int h = 0; h < nh; ++h) ++corner_start[size_t(half_edge_tail(F, h)) + 1];
   std::partial_sum(corner_start.begin(), corner_start.end(), corner_start.begin());
   std::vector<int> fill(corner_start.begin(), corner_start.end() - 1);
-  for (int h = 0; h < nh; ++h) corner[size_t(fill[size_t(tail(F, h))]++)] = h;
+  for (int h = 0; h < nh; ++h) corner[size_t(fill[size_t(half_edge_tail(F, h))]++)] = h;
 
   disk.ring_start.assign(size_t(n) + 1, 0);
   for (int i = 0; i < n; ++i)
@@ -196,12 +167,12 @@ void build_rings(const std::vector<int>& twin, DiskMesh& disk) {
         if (twin[size_t(corner[size_t(c)])] < 0) h = corner[size_t(c)];
     int slot = disk.ring_start[size_t(v)];
     for (int step = 0; step < c1 - c0; ++step) {
-      disk.ring[size_t(slot++)] = head(F, h);
-      if (twin[size_t(previous(h))] < 0) {  // reached the incoming boundary edge
-        disk.ring[size_t(slot++)] = tail(F, previous(h));
+      disk.ring[size_t(slot++)] = half_edge_head(F, h);
+      if (twin[size_t(previous_half_edge(h))] < 0) {  // reached the incoming boundary edge
+        disk.ring[size_t(slot++)] = half_edge_tail(F, previous_half_edge(h));
         break;
       }
-      h = twin[size_t(previous(h))];
+      h = twin[size_t(previous_half_edge(h))];
     }
   }
 }

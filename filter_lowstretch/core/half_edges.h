@@ -2,6 +2,8 @@
 // and corner h is vertex F(f, k) in face f (the tail of half-edge h).
 #pragma once
 #include <Eigen/Core>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace lowstretch {
@@ -9,6 +11,12 @@ namespace lowstretch {
 inline int half_edge_tail(const Eigen::MatrixXi& F, int h) { return F(h / 3, h % 3); }
 inline int half_edge_head(const Eigen::MatrixXi& F, int h) { return F(h / 3, (h % 3 + 1) % 3); }
 inline int next_half_edge(int h) { return (h / 3) * 3 + (h % 3 + 1) % 3; }
+inline int previous_half_edge(int h) { return (h / 3) * 3 + (h % 3 + 2) % 3; }  // ends at the tail of h
+
+// Every half-edge with the key of its undirected edge (smaller vertex in the high 32 bits),
+// sorted by key: the half-edges of one edge are neighbours. Sorting beats hashing at a million
+// half-edges.
+std::vector<std::pair<uint64_t, int>> half_edges_by_edge(const Eigen::MatrixXi& F);
 
 // The opposite half-edge of each half-edge, -1 on the boundary. Meant for edge-manifold,
 // consistently oriented meshes (checked beforehand by make_disk_mesh); on others the pairing of

@@ -23,6 +23,10 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 using Backend = amgcl::backend::builtin<double>;
+// The coarsest level, solved by amgcl's own dense LU: its default (3000 unknowns) made that solve
+// the slowest part of every cycle on meshes of 5k-50k vertices.
+constexpr unsigned kCoarseEnough = 1500;
+
 using AmgSolver = amgcl::make_solver<
     amgcl::amg<Backend, amgcl::coarsening::smoothed_aggregation, amgcl::relaxation::ilu0>,
     amgcl::solver::bicgstab<Backend>>;
@@ -73,12 +77,6 @@ LaplacianSolver::LaplacianSolver(const DiskMesh& disk, const SolverOptions& opti
   }
 }
 
-struct LaplacianSolver::Amg : AmgSolver {
-  using AmgSolver::AmgSolver;
-};
-
-LaplacianSolver::~LaplacianSolver() = default;
-
 Eigen::MatrixXd LaplacianSolver::assemble(const std::vector<double>& weights, const Eigen::MatrixXd& boundary_uv,
                                           Eigen::MatrixXd& uv) {
   const int n = int(disk_.V.rows());
@@ -114,45 +112,35 @@ void LaplacianSolver::scatter(const Eigen::MatrixXd& x, Eigen::MatrixXd& uv) con
 }
 
 // u and v on one thread each: a hierarchy keeps per-level work vectors, so two concurrent solves
-// need two hierarchies; building both at once costs the wall time of one. A later pass first
-// tries the hierarchy of an earlier one (its matrix differs only in values) and builds a new one
-// only when that takes too many iterations.
+// need two hierarchies; building both at once costs the wall time of one. Every pass builds its
+// own: an earlier pass's hierarchy, tried on later passes, needed about twice the iterations at
+// this tolerance and cost more than it saved.
 bool LaplacianSolver::solve_amg(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& x) {
   const int n = int(matrix_.rows());
   const int* ptr = matrix_.outerIndexPtr();
-  auto system = boost::make_tuple(size_t(n), boost::make_iterator_range(ptr, ptr + n + 1),
-                                  boost::make_iterator_range(matrix_.innerIndexPtr(), matrix_.innerIndexPtr() + ptr[n]),
-                                  boost::make_iterator_range(matrix_.valuePtr(), matrix_.valuePtr() + ptr[n]));
+  const auto system = boost::make_tuple(
+      size_t(n), boost::make_iterator_range(ptr, ptr + n + 1),
+      boost::make_iterator_range(matrix_.innerIndexPtr(), matrix_.innerIndexPtr() + ptr[n]),
+      boost::make_iterator_range(matrix_.valuePtr(), matrix_.valuePtr() + ptr[n]));
+  AmgSolver::params prm;
+  prm.solver.tol = options_.tolerance;
+  prm.solver.maxiter = size_t(options_.max_iterations);
+  prm.precond.coarse_enough = kCoarseEnough;
   double setup[2] = {0, 0}, solving[2] = {0, 0};
   size_t iterations[2] = {0, 0};
-  bool rebuilt[2] = {false, false};
   bool failed[2] = {false, false};
   auto solve_column = [&](int c) {
-    std::vector<double> b(rhs.col(c).data(), rhs.col(c).data() + n), u(x.col(c).data(), x.col(c).data() + n);
-    double estimate = 0;
     try {  // amgcl throws on a zero pivot or a breakdown; the direct solve takes over then
       Clock::time_point start = Clock::now();
-      if (amg_[c]) {
-        const Backend::matrix A(system);
-        boost::tie(iterations[c], estimate) = (*amg_[c])(A, b, u);
-        solving[c] = seconds_since(start);
-        std::copy(u.begin(), u.end(), x.col(c).data());
-        if (iterations[c] <= size_t(options_.stale_iteration_factor * fresh_iterations_[c] + 2)) return;
-      }
-      start = Clock::now();
-      AmgSolver::params prm;
-      prm.solver.tol = options_.tolerance;
-      prm.solver.maxiter = size_t(options_.max_iterations);
-      amg_[c].reset(new Amg(system, prm));
-      rebuilt[c] = true;
+      const AmgSolver amg(system, prm);
       setup[c] = seconds_since(start);
       start = Clock::now();
-      boost::tie(iterations[c], estimate) = (*amg_[c])(b, u);
-      fresh_iterations_[c] = int(iterations[c]);
+      std::vector<double> b(rhs.col(c).data(), rhs.col(c).data() + n), u(x.col(c).data(), x.col(c).data() + n);
+      double estimate = 0;
+      boost::tie(iterations[c], estimate) = amg(b, u);
       std::copy(u.begin(), u.end(), x.col(c).data());
-      solving[c] += seconds_since(start);
+      solving[c] = seconds_since(start);
     } catch (...) {
-      amg_[c].reset();
       failed[c] = true;
     }
   };
@@ -167,7 +155,6 @@ bool LaplacianSolver::solve_amg(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& x) 
   report_.seconds_setup = std::max(setup[0], setup[1]);
   report_.seconds_solve = std::max(solving[0], solving[1]);
   report_.iterations = int(std::max(iterations[0], iterations[1]));
-  report_.rebuilt = rebuilt[0] || rebuilt[1];
   report_.relative_residual = std::max(relative_residual(matrix_, rhs.col(0), x.col(0)),
                                        relative_residual(matrix_, rhs.col(1), x.col(1)));
   return !failed[0] && !failed[1] && x.allFinite() && report_.iterations < options_.max_iterations &&

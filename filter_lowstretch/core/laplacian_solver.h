@@ -15,7 +15,6 @@
 #include <Eigen/Core>
 #include <Eigen/Sparse>
 #include <Eigen/UmfPackSupport>
-#include <memory>
 #include <vector>
 
 #include "disk_mesh.h"
@@ -27,7 +26,6 @@ namespace lowstretch {
 struct SolveReport {
   LinearSolver used = LinearSolver::Direct;  // Direct also when AMG fell back
   bool fell_back = false;                    // AMG was asked for but did not converge
-  bool rebuilt = false;                      // a new multigrid hierarchy was built for this pass
   int iterations = 0;                        // Krylov iterations, the larger of u and v
   double relative_residual = 0;              // max over u, v of |A x - b| / |b|
   double seconds_assembly = 0, seconds_setup = 0, seconds_solve = 0;
@@ -36,7 +34,6 @@ struct SolveReport {
 class LaplacianSolver {
  public:
   LaplacianSolver(const DiskMesh& disk, const SolverOptions& options);
-  ~LaplacianSolver();
 
   // weights: aligned with disk.ring; boundary_uv: rows follow disk.boundary. uv: on entry the
   // previous pass's solution (the AMG's starting guess) or empty; on return UV for every vertex
@@ -62,9 +59,6 @@ class LaplacianSolver {
   Eigen::UmfPackLU<Eigen::SparseMatrix<double>> lu_;
   bool analyzed_ = false;
   SolveReport report_;
-  struct Amg;                        // amgcl's solver, kept out of this header
-  std::unique_ptr<Amg> amg_[2];      // one hierarchy for u, one for v
-  int fresh_iterations_[2] = {0, 0}; // iterations right after the last build
 };
 
 }  // namespace lowstretch

@@ -1,29 +1,20 @@
 #include "mesh_components.h"
 
-#include <numeric>
-
 #include "half_edges.h"
+#include "union_find.h"
 
 namespace lowstretch {
 
-namespace {
-int find(std::vector<int>& parent, int x) {
-  while (parent[size_t(x)] != x) x = parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
-  return x;
-}
-}  // namespace
-
 std::vector<int> face_components(const Eigen::MatrixXi& F, int& count) {
   const int m = int(F.rows());
-  std::vector<int> parent(static_cast<size_t>(m));
-  std::iota(parent.begin(), parent.end(), 0);
+  UnionFind faces(m);
   const std::vector<int> twin = opposite_half_edges(F);
   for (int h = 0; h < 3 * m; ++h)
-    if (twin[size_t(h)] >= 0) parent[size_t(find(parent, h / 3))] = find(parent, twin[size_t(h)] / 3);
+    if (twin[size_t(h)] >= 0) faces.unite(h / 3, twin[size_t(h)] / 3);
   std::vector<int> number(static_cast<size_t>(m), -1), component(static_cast<size_t>(m));
   count = 0;
   for (int f = 0; f < m; ++f) {
-    int& n = number[size_t(find(parent, f))];
+    int& n = number[size_t(faces.find(f))];
     if (n < 0) n = count++;
     component[size_t(f)] = n;
   }

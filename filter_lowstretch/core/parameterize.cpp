@@ -29,7 +29,7 @@ Error check_options(const Options& o) {
     return {ErrorCode::InvalidOption, 0, "max passes must be 0 or more, got " + std::to_string(o.max_passes)};
   const SolverOptions& s = o.solver;
   if (!(s.tolerance > 0 && s.tolerance < 1 && s.residual_accepted >= s.tolerance && s.max_iterations > 0 &&
-        s.stale_iteration_factor >= 0 && s.amg_minimum_rows >= 1))
+        s.amg_minimum_rows >= 1))
     return {ErrorCode::InvalidOption, 0, "the multigrid solver's settings are out of range (tolerance in (0, 1), "
                                          "accepted residual at least the tolerance, at least one iteration)"};
   return {};
@@ -38,14 +38,7 @@ Error check_options(const Options& o) {
 // Passes are ranked by (flipped + degenerate triangles, L2 stretch over the valid triangles):
 // with a convex boundary there are none, and the rank is the paper's E_s.
 std::pair<int, double> rank(const FaceStretch& s) {
-  double weighted = 0, area = 0;
-  for (Eigen::Index f = 0; f < s.sigma.size(); ++f)
-    if (s.valid(f)) {
-      weighted += s.area_3d(f) * s.sigma(f) * s.sigma(f);
-      area += s.area_3d(f);
-    }
-  const double l2 = area > 0 ? s.normalization * std::sqrt(weighted / area) : std::numeric_limits<double>::infinity();
-  return {s.flipped + s.degenerate, l2};
+  return {s.flipped + s.degenerate, l2_stretch(s, true)};
 }
 
 Error boundary_positions(const DiskMesh& disk, BoundaryShape shape, Eigen::MatrixXd& boundary_uv,

@@ -69,6 +69,35 @@ Eigen::VectorXd vertex_stretch(const Eigen::MatrixXi& F, int vertex_count, const
   return sigma;
 }
 
+namespace {
+// face(i) for i in [0, count): the faces to sum over.
+template <class FaceAt>
+double l2_stretch_over(const FaceStretch& s, Eigen::Index count, FaceAt face, bool skip_invalid) {
+  double weighted = 0, valid_area = 0, area_3d = 0, area_uv = 0;
+  for (Eigen::Index i = 0; i < count; ++i) {
+    const Eigen::Index f = face(i);
+    area_3d += s.area_3d(f);
+    area_uv += std::abs(s.area_uv(f));
+    if (!s.valid(f)) {
+      if (!skip_invalid) return kInf;
+      continue;
+    }
+    weighted += s.area_3d(f) * s.sigma(f) * s.sigma(f);
+    valid_area += s.area_3d(f);
+  }
+  if (!(valid_area > 0)) return kInf;
+  return std::sqrt(area_uv / area_3d) * std::sqrt(weighted / valid_area);
+}
+}  // namespace
+
+double l2_stretch(const FaceStretch& s, bool skip_invalid) {
+  return l2_stretch_over(s, s.sigma.size(), [](Eigen::Index i) { return i; }, skip_invalid);
+}
+
+double l2_stretch(const FaceStretch& s, const std::vector<int>& faces) {
+  return l2_stretch_over(s, Eigen::Index(faces.size()), [&](Eigen::Index i) { return Eigen::Index(faces[size_t(i)]); }, false);
+}
+
 SurfaceReference surface_reference(const DiskMesh& disk) {
   SurfaceReference r;
   const Eigen::Index ne = disk.edges.rows(), nf = disk.F.rows();
@@ -100,9 +129,7 @@ PassMetrics measure(const DiskMesh& disk, const Eigen::MatrixXd& UV, const FaceS
   if (m.flipped + m.degenerate > 0) {
     m.l2_stretch = m.linf_stretch = kInf;
   } else {
-    double weighted = 0;
-    for (Eigen::Index f = 0; f < nf; ++f) weighted += s.area_3d(f) * s.sigma(f) * s.sigma(f);
-    m.l2_stretch = s.normalization * std::sqrt(weighted / total_3d);
+    m.l2_stretch = l2_stretch(s);
     m.linf_stretch = s.normalization * s.gamma.maxCoeff();
   }
 

@@ -2,6 +2,7 @@
 // paper's distortion metrics.
 #pragma once
 #include <Eigen/Core>
+#include <vector>
 
 #include "disk_mesh.h"
 #include "method_types.h"
@@ -27,6 +28,13 @@ FaceStretch face_stretch(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, con
 // the finite per-face values (so usable for reweighting); normalized. A vertex whose faces all
 // have zero 3D area gets the global L2 stretch.
 Eigen::VectorXd vertex_stretch(const Eigen::MatrixXi& F, int vertex_count, const FaceStretch& s);
+
+// The normalized L2 stretch of every face: sqrt(sum |A_U| / sum A) * sqrt(sum A sigma^2 / sum A)
+// (METHOD.md section 2). Infinite if a face is flipped or zero-area, unless skip_invalid: then
+// the sums of sigma run over the valid faces alone (to rank passes that have some).
+double l2_stretch(const FaceStretch& s, bool skip_invalid = false);
+// The same over some of the faces.
+double l2_stretch(const FaceStretch& s, const std::vector<int>& faces);
 
 // The 3D side of the edge and angle metrics. It is the same in every pass, so the pass loop
 // computes it once.
