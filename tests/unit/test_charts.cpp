@@ -5,6 +5,7 @@
 
 #include <dirent.h>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -86,6 +87,62 @@ void expect_valid_layout(const Eigen::MatrixXi& F, const ChartsResult& r) {
 testmesh::Mesh disk_with_two_holes() { return testmesh::punched_grid(20, {{0.3, 0.3}, {0.7, 0.6}}, 0.12); }
 
 }  // namespace
+
+// Every interior edge of the input: the corners of its two faces at each end either share one UV
+// (the edge is inside a chart) or do not (the edge is a seam). The seams so found, by 3D length,
+// must be the seam length the result reports, and they must be where the map was cut: a
+// mesh that needs no cut has none.
+double uv_discontinuity_length(const testmesh::Mesh& m, const ChartsResult& r, int& discontinuous_edges) {
+  const Eigen::Index nf = m.F.rows();
+  std::vector<std::array<long long, 4>> sides;  // (low vertex, high vertex, face, corner of low)
+  for (Eigen::Index f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = m.F(f, k), b = m.F(f, (k + 1) % 3);
+      sides.push_back({std::min(a, b), std::max(a, b), f, k});
+    }
+  std::sort(sides.begin(), sides.end());
+  double length = 0;
+  discontinuous_edges = 0;
+  auto uv_at = [&](long long f, int vertex) {
+    for (int k = 0; k < 3; ++k)
+      if (m.F(f, k) == vertex) return corner(r, f, k);
+    return Eigen::Vector2d(Eigen::Vector2d::Constant(NAN));
+  };
+  for (size_t i = 0; i + 1 < sides.size(); ++i) {
+    if (sides[i][0] != sides[i + 1][0] || sides[i][1] != sides[i + 1][1]) continue;
+    const int a = int(sides[i][0]), b = int(sides[i][1]);
+    const long long f = sides[i][2], g = sides[i + 1][2];
+    const bool same = (uv_at(f, a) - uv_at(g, a)).norm() < 1e-12 && (uv_at(f, b) - uv_at(g, b)).norm() < 1e-12;
+    if (!same) {
+      length += (m.V.row(a) - m.V.row(b)).norm();
+      ++discontinuous_edges;
+    }
+    ++i;
+  }
+  return length;
+}
+
+TEST(Charts, ReportedSeamsAreTheUvDiscontinuities) {
+  const std::vector<std::pair<const char*, testmesh::Mesh>> cases = {
+      {"sphere", testmesh::sphere(10, 16)},
+      {"torus", testmesh::torus(16, 10)},
+      {"genus 2", testmesh::double_torus()},
+      {"punched disk", testmesh::punched_grid(12, {Eigen::RowVector2d(0.5, 0.5)}, 0.2)},
+      {"two grids", testmesh::two_grids(6)}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.first);
+    const ChartsResult r = charts_of(c.second);
+    ASSERT_FALSE(r.error) << message(r.error);
+    int discontinuous = 0;
+    const double length = uv_discontinuity_length(c.second, r, discontinuous);
+    EXPECT_NEAR(length, r.seam_length, 1e-9 * (1 + r.seam_length));
+    double summed = 0;
+    for (const Chart& chart : r.charts) summed += chart.seam_length;
+    EXPECT_NEAR(summed, r.seam_length, 1e-9 * (1 + r.seam_length));
+    const bool needs_a_cut = std::string(c.first) != "punched disk" && std::string(c.first) != "two grids";
+    EXPECT_EQ(discontinuous > 0, needs_a_cut) << discontinuous << " discontinuous edges";
+  }
+}
 
 TEST(Charts, DiskGivesParameterizesResult) {
   const testmesh::Mesh m = testmesh::grid(10, [](double x, double y) { return 0.3 * std::sin(3 * x) * y; });
