@@ -59,6 +59,13 @@ Mesh hemisphere(int rings, int sectors) {
   return from_lists(v, f);
 }
 
+Mesh tall_cap(int rings, int sectors) {
+  Mesh m = hemisphere(rings, sectors);
+  m.V.col(2) *= 2.5;
+  m.V.col(0) *= 1.5;
+  return m;
+}
+
 Mesh octahedron() {
   return from_lists({{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}},
                     {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}});

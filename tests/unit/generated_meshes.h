@@ -15,6 +15,9 @@ struct Mesh {
 Mesh grid(int n, const std::function<double(double, double)>& height = nullptr);
 // The upper hemisphere of the unit sphere as a disk (rings x sectors, apex on top).
 Mesh hemisphere(int rings, int sectors);
+// hemisphere(rings, sectors) stretched along z (2.5) and x (1.5): Floater's map squeezes its top,
+// as it does on the paper's heads, and the reweighting changes the weights strongly.
+Mesh tall_cap(int rings, int sectors);
 // A closed octahedron.
 Mesh octahedron();
 // Two copies of grid(n) side by side: two components.

@@ -18,15 +18,6 @@ using namespace lowstretch;
 
 namespace {
 
-// A tall cap of about 7,300 vertices (so above the direct-solve size): the reweighting
-// changes the weights strongly from pass to pass.
-testmesh::Mesh tall_cap() {
-  testmesh::Mesh m = testmesh::hemisphere(60, 120);
-  m.V.col(2) *= 2.5;
-  m.V.col(0) *= 1.5;
-  return m;
-}
-
 struct PassRun {
   Result result;
   std::vector<Eigen::MatrixXd> uv;  // every pass's map
@@ -70,7 +61,7 @@ double largest_relative_imbalance(const DiskMesh& disk, const std::vector<double
 }  // namespace
 
 TEST(LaplacianSolver, MultigridMatchesTheDirectSolveOnEveryPass) {
-  const testmesh::Mesh m = tall_cap();
+  const testmesh::Mesh m = testmesh::tall_cap(60, 120);  // 7,201 vertices: above the direct-solve size
   for (BoundaryShape boundary : {BoundaryShape::Square, BoundaryShape::Circle}) {
     const PassRun amg = run(m, boundary, with(LinearSolver::Amg));
     const PassRun direct = run(m, boundary, with(LinearSolver::Direct));
@@ -94,7 +85,7 @@ TEST(LaplacianSolver, MultigridMatchesTheDirectSolveOnEveryPass) {
 }
 
 TEST(LaplacianSolver, ReportedResidualIsTheResidualOfTheSolution) {
-  const testmesh::Mesh m = tall_cap();
+  const testmesh::Mesh m = testmesh::tall_cap(60, 120);  // 7,201 vertices: above the direct-solve size
   DiskMesh disk;
   ASSERT_FALSE(make_disk_mesh(m.V, m.F, disk));
   int fallbacks = 0;
@@ -113,7 +104,7 @@ TEST(LaplacianSolver, ReportedResidualIsTheResidualOfTheSolution) {
 }
 
 TEST(LaplacianSolver, DirectSolveTakesOverWhereMultigridDoesNotConverge) {
-  const testmesh::Mesh m = tall_cap();
+  const testmesh::Mesh m = testmesh::tall_cap(60, 120);  // 7,201 vertices: above the direct-solve size
   SolverOptions starved = with(LinearSolver::Amg);
   starved.max_iterations = 1;  // no pass converges in one BiCGStab iteration at 1e-8
   const PassRun amg = run(m, BoundaryShape::Square, starved);

@@ -12,15 +12,6 @@ using namespace lowstretch;
 
 namespace {
 
-// A tall cap (a hemisphere stretched along z and x): Floater's map squeezes its top, as it does
-// on the paper's heads. (On nearly flat grids U0 is already good and U1 can overshoot.)
-testmesh::Mesh tall_cap() {
-  testmesh::Mesh m = testmesh::hemisphere(16, 40);
-  m.V.col(2) *= 2.5;
-  m.V.col(0) *= 1.5;
-  return m;
-}
-
 // Signed area of face f in a map.
 double uv_area(const Eigen::MatrixXd& uv, const Eigen::MatrixXi& F, Eigen::Index f) {
   const Eigen::RowVector2d a = uv.row(F(f, 0)), b = uv.row(F(f, 1)), c = uv.row(F(f, 2));
@@ -54,7 +45,7 @@ TEST(Parameterize, FlatDiskWithNaturalBoundaryHasStretchOne) {
 }
 
 TEST(Parameterize, ConvexBoundariesGiveNoFlipsAndLowerStretch) {
-  for (const testmesh::Mesh& m : {testmesh::hemisphere(16, 32), tall_cap()})
+  for (const testmesh::Mesh& m : {testmesh::hemisphere(16, 32), testmesh::tall_cap(16, 40)})
     for (BoundaryShape shape : {BoundaryShape::Square, BoundaryShape::Circle})
       for (InitialWeights w : {InitialWeights::Floater, InitialWeights::MeanValue}) {
         SCOPED_TRACE(std::string(to_string(shape)) + " " + to_string(w));
@@ -74,7 +65,7 @@ TEST(Parameterize, ConvexBoundariesGiveNoFlipsAndLowerStretch) {
 }
 
 TEST(Parameterize, StopRuleReturnsTheBestPassAndStopsWhenStretchRises) {
-  const testmesh::Mesh m = tall_cap();
+  const testmesh::Mesh m = testmesh::tall_cap(16, 40);
   const Result r = parameterize(m.V, m.F);
   ASSERT_FALSE(r.error);
   const auto best = std::min_element(r.passes.begin(), r.passes.end(),
@@ -137,7 +128,7 @@ TEST(Parameterize, UnreferencedVerticesKeepTheirRowsAndChangeNothing) {
 // The free boundary carries no no-flip guarantee: every pass's reported flip and zero-area counts
 // must be those of its map, counted again here from the UV it hands out.
 TEST(Parameterize, NaturalBoundaryOnACurvedDiskReportsItsFlips) {
-  for (const testmesh::Mesh& m : {testmesh::hemisphere(12, 24), tall_cap()}) {
+  for (const testmesh::Mesh& m : {testmesh::hemisphere(12, 24), testmesh::tall_cap(16, 40)}) {
     Options o;
     o.boundary = BoundaryShape::Natural;
     o.max_passes = 6;
