@@ -200,6 +200,110 @@ ChartsResult from_disk(const Eigen::MatrixXi& F, Result disk) {
   return result;
 }
 
+// Every component as a chart: its mesh (holes closed, cut open), the method on it, every pass
+// measured over its real faces; fills result.charts, seam_length, notes and passes.
+Error solve_charts(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, double unit,
+                   const std::vector<std::vector<int>>& faces_of, const Options& disk_options,
+                   std::vector<SolvedChart>& solved, ChartsResult& result) {
+  const int count = int(faces_of.size());
+  std::vector<int> local_of(static_cast<size_t>(unit_V.rows()), -1);
+  std::vector<std::vector<ChartPass>> chart_passes(static_cast<size_t>(count));
+  std::vector<int> kept;
+  for (int c = 0; c < count; ++c) {
+    ChartMesh mesh;
+    if (Error e = make_chart_mesh(unit_V, F, faces_of[size_t(c)], local_of, mesh)) return e;
+    Options chart_options = disk_options;
+    if (disk_options.progress)
+      chart_options.progress = [&disk_options, c, count](double fraction, const char* stage) {
+        return disk_options.progress((c + fraction) / (count + 0.1), stage);
+      };
+    std::vector<ChartPass>& passes = chart_passes[size_t(c)];
+    chart_options.pass_uv = [&mesh, &passes](int, const Eigen::MatrixXd& uv) { passes.push_back(measure_real_faces(mesh, uv)); };
+    const Result r = parameterize(mesh.V, mesh.F, chart_options);
+    if (r.error) return r.error;
+    kept.push_back(r.chosen_pass);
+    solved.push_back(scale_by_area(mesh, r));
+    Chart chart;
+    chart.faces = int(mesh.input_face.size());
+    chart.closed_holes = mesh.closed_holes;
+    chart.seam_length = mesh.seam_length * unit;
+    chart.chosen_pass = r.chosen_pass;
+    chart.passes = int(r.passes.size());
+    result.charts.push_back(chart);
+    result.seam_length += chart.seam_length;
+    for (const std::string& note : r.notes) result.notes.push_back("chart " + std::to_string(c) + ": " + note);
+  }
+  result.passes = layout_passes(chart_passes, kept);
+  return {};
+}
+
+// Packs the charts' boxes, places every corner, then moves and scales the whole layout uniformly
+// into [0,1]^2; fills result.corner_uv and face_chart.
+Error lay_out(std::vector<SolvedChart>& solved, const std::vector<std::vector<int>>& faces_of, Eigen::Index face_count,
+              const ChartPacker& pack, ChartsResult& result) {
+  std::vector<Eigen::AlignedBox2d> boxes;
+  for (const SolvedChart& s : solved) boxes.push_back(s.box);
+  std::vector<ChartPlacement> placements;
+  if (!pack(boxes, placements) || placements.size() != boxes.size())
+    return {ErrorCode::ChartsNotPacked, static_cast<long long>(boxes.size()), ""};
+  Eigen::AlignedBox2d layout_box;
+  for (size_t c = 0; c < solved.size(); ++c)
+    for (Eigen::Vector2d& p : solved[c].corners) {
+      p = placements[c].scale * p + placements[c].offset;
+      layout_box.extend(p);
+    }
+  const double side = layout_box.sizes().maxCoeff();
+  result.corner_uv.resize(face_count, 6);
+  result.face_chart.assign(size_t(face_count), 0);
+  for (size_t c = 0; c < solved.size(); ++c)
+    for (size_t j = 0; j < faces_of[c].size(); ++j) {
+      const int f = faces_of[c][j];
+      result.face_chart[size_t(f)] = int(c);
+      for (int k = 0; k < 3; ++k) {
+        const Eigen::Vector2d p = (solved[c].corners[3 * j + size_t(k)] - layout_box.min()) / (side > 0 ? side : 1);
+        result.corner_uv.block(f, 2 * k, 1, 2) = p.cwiseMax(0.0).cwiseMin(1.0).transpose();
+      }
+    }
+  return {};
+}
+
+// The layout measured like a disk's pass, as a mesh of its own: three vertices per face, and an
+// edge for every pair of corners that is one edge of the input and one edge of the layout.
+void measure_layout(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, int vertex_rows,
+                    const std::vector<std::vector<int>>& faces_of, ChartsResult& result) {
+  Eigen::MatrixXd corner_V(3 * F.rows(), 3), corner_uv(3 * F.rows(), 2);
+  Eigen::MatrixXi corner_F(F.rows(), 3);
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      corner_V.row(3 * f + k) = unit_V.row(F(f, k));
+      corner_F(f, k) = int(3 * f + k);
+      corner_uv.row(3 * f + k) = result.corner_uv.block(f, 2 * k, 1, 2);
+    }
+  std::vector<std::array<int, 2>> edges;
+  const std::vector<int> twin = opposite_half_edges(F);
+  for (int h = 0; h < int(twin.size()); ++h) {
+    const int t = twin[size_t(h)];
+    const bool joined = t >= 0 && result.face_chart[size_t(h / 3)] == result.face_chart[size_t(t / 3)] &&
+                        corner_uv.row(h) == corner_uv.row(next_half_edge(t)) &&
+                        corner_uv.row(next_half_edge(h)) == corner_uv.row(t);
+    if (!joined || h < t) edges.push_back({h, next_half_edge(h)});
+  }
+  Eigen::MatrixXi corner_edges(Eigen::Index(edges.size()), 2);
+  for (size_t e = 0; e < edges.size(); ++e) corner_edges.row(Eigen::Index(e)) << edges[e][0], edges[e][1];
+  const FaceStretch s = face_stretch(corner_V, corner_F, corner_uv);
+  result.layout = measure(corner_V, corner_F, corner_edges, corner_uv, s);
+  result.coverage = s.area_uv.cwiseAbs().sum();
+  result.face_stretch.resize(F.rows());
+  for (Eigen::Index f = 0; f < F.rows(); ++f) result.face_stretch(f) = s.valid(f) ? s.normalization * s.sigma(f) : kInf;
+  result.vertex_stretch = vertex_stretch(F, vertex_rows, s);
+  std::vector<char> used(size_t(vertex_rows), 0);
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) used[size_t(F(f, k))] = 1;
+  for (int v = 0; v < vertex_rows; ++v)
+    if (!used[size_t(v)]) result.vertex_stretch(v) = 0;
+  for (size_t c = 0; c < faces_of.size(); ++c) result.charts[c].l2_stretch = l2_stretch(s, faces_of[c]);
+}
+
 }  // namespace
 
 ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options,
@@ -223,97 +327,9 @@ ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi
   const Eigen::MatrixXd unit_V = unit_box_of_used(V, F, unit);
   ChartsResult result;
   std::vector<SolvedChart> solved;
-  std::vector<int> local_of(static_cast<size_t>(V.rows()), -1);
-  std::vector<std::vector<ChartPass>> chart_passes(static_cast<size_t>(count));
-  std::vector<int> kept;
-  for (int c = 0; c < count; ++c) {
-    ChartMesh mesh;
-    if (Error e = make_chart_mesh(unit_V, F, faces_of[size_t(c)], local_of, mesh)) return failed(e);
-    Options chart_options = options.disk;
-    if (options.disk.progress)
-      chart_options.progress = [&options, c, count](double fraction, const char* stage) {
-        return options.disk.progress((c + fraction) / (count + 0.1), stage);
-      };
-    std::vector<ChartPass>& passes = chart_passes[size_t(c)];
-    chart_options.pass_uv = [&mesh, &passes](int, const Eigen::MatrixXd& uv) { passes.push_back(measure_real_faces(mesh, uv)); };
-    const Result r = parameterize(mesh.V, mesh.F, chart_options);
-    if (r.error) return failed(r.error);
-    kept.push_back(r.chosen_pass);
-    solved.push_back(scale_by_area(mesh, r));
-    Chart chart;
-    chart.faces = int(mesh.input_face.size());
-    chart.closed_holes = mesh.closed_holes;
-    chart.seam_length = mesh.seam_length * unit;
-    chart.chosen_pass = r.chosen_pass;
-    chart.passes = int(r.passes.size());
-    result.charts.push_back(chart);
-    result.seam_length += chart.seam_length;
-    for (const std::string& note : r.notes) result.notes.push_back("chart " + std::to_string(c) + ": " + note);
-  }
-
-  result.passes = layout_passes(chart_passes, kept);
-
-  std::vector<Eigen::AlignedBox2d> boxes;
-  for (const SolvedChart& s : solved) boxes.push_back(s.box);
-  std::vector<ChartPlacement> placements;
-  if (!pack(boxes, placements) || placements.size() != boxes.size())
-    return failed({ErrorCode::ChartsNotPacked, static_cast<long long>(boxes.size()), ""});
-
-  // Placed, then the whole layout moved and scaled uniformly into [0,1]^2.
-  Eigen::AlignedBox2d layout_box;
-  for (size_t c = 0; c < solved.size(); ++c)
-    for (Eigen::Vector2d& p : solved[c].corners) {
-      p = placements[c].scale * p + placements[c].offset;
-      layout_box.extend(p);
-    }
-  const double side = layout_box.sizes().maxCoeff();
-  result.corner_uv.resize(F.rows(), 6);
-  result.face_chart.assign(size_t(F.rows()), 0);
-  for (size_t c = 0; c < solved.size(); ++c)
-    for (size_t j = 0; j < faces_of[c].size(); ++j) {
-      const int f = faces_of[c][j];
-      result.face_chart[size_t(f)] = int(c);
-      for (int k = 0; k < 3; ++k) {
-        const Eigen::Vector2d p = (solved[c].corners[3 * j + size_t(k)] - layout_box.min()) / (side > 0 ? side : 1);
-        result.corner_uv.block(f, 2 * k, 1, 2) = p.cwiseMax(0.0).cwiseMin(1.0).transpose();
-      }
-    }
-
-  // The layout as a mesh of its own (three vertices per face), measured like a disk's pass.
-  DiskMesh atlas;
-  atlas.V.resize(3 * F.rows(), 3);
-  atlas.F.resize(F.rows(), 3);
-  Eigen::MatrixXd atlas_uv(3 * F.rows(), 2);
-  for (Eigen::Index f = 0; f < F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      atlas.V.row(3 * f + k) = unit_V.row(F(f, k));
-      atlas.F(f, k) = int(3 * f + k);
-      atlas_uv.row(3 * f + k) = result.corner_uv.block(f, 2 * k, 1, 2);
-    }
-  // Its edges: one per pair of corners that is one edge of the input and one edge of the layout.
-  std::vector<std::array<int, 2>> edges;
-  const std::vector<int> twin = opposite_half_edges(F);
-  for (int h = 0; h < int(twin.size()); ++h) {
-    const int t = twin[size_t(h)];
-    const bool joined = t >= 0 && result.face_chart[size_t(h / 3)] == result.face_chart[size_t(t / 3)] &&
-                        atlas_uv.row(h) == atlas_uv.row(next_half_edge(t)) &&
-                        atlas_uv.row(next_half_edge(h)) == atlas_uv.row(t);
-    if (!joined || h < t) edges.push_back({h, next_half_edge(h)});
-  }
-  atlas.edges.resize(Eigen::Index(edges.size()), 2);
-  for (size_t e = 0; e < edges.size(); ++e) atlas.edges.row(Eigen::Index(e)) << edges[e][0], edges[e][1];
-  const FaceStretch s = face_stretch(atlas.V, atlas.F, atlas_uv);
-  result.layout = measure(atlas, atlas_uv, s);
-  result.coverage = s.area_uv.cwiseAbs().sum();
-  result.face_stretch.resize(F.rows());
-  for (Eigen::Index f = 0; f < F.rows(); ++f) result.face_stretch(f) = s.valid(f) ? s.normalization * s.sigma(f) : kInf;
-  result.vertex_stretch = vertex_stretch(F, int(V.rows()), s);
-  std::vector<char> used(size_t(V.rows()), 0);
-  for (Eigen::Index f = 0; f < F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) used[size_t(F(f, k))] = 1;
-  for (Eigen::Index v = 0; v < V.rows(); ++v)
-    if (!used[size_t(v)]) result.vertex_stretch(v) = 0;
-  for (size_t c = 0; c < solved.size(); ++c) result.charts[c].l2_stretch = l2_stretch(s, faces_of[c]);
+  if (Error e = solve_charts(unit_V, F, unit, faces_of, options.disk, solved, result)) return failed(e);
+  if (Error e = lay_out(solved, faces_of, F.rows(), pack, result)) return failed(e);
+  measure_layout(unit_V, F, int(V.rows()), faces_of, result);
   result.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
   result.layout.seconds = result.seconds_total;
   return result;

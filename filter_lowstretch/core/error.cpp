@@ -45,7 +45,7 @@ std::string message(const Error& e) {
              kChartsHint;
     case ErrorCode::ZeroAreaMesh:
       return "all " + plural(e.count, "face has", "faces have") + " zero area: there is no surface to parameterize";
-    case ErrorCode::InvalidOption: return "invalid option: " + e.detail;
+    case ErrorCode::InvalidOption: return "invalid option: " + (e.option.empty() ? "" : e.option + " ") + e.detail;
     case ErrorCode::SolverFailed:
       return "the linear solve failed in pass " + n(e.count) + " (" + e.detail +
              "): try the circle boundary or Floater weights";
@@ -55,6 +55,11 @@ std::string message(const Error& e) {
     case ErrorCode::Cancelled: return "cancelled";
   }
   return "unknown error";
+}
+
+std::string message(const Error& e, const std::function<std::string(const std::string&)>& name_of) {
+  if (e.code != ErrorCode::InvalidOption || e.option.empty()) return message(e);
+  return name_of(e.option) + " " + e.detail;
 }
 
 bool charts_would_help(ErrorCode code) {

@@ -1,6 +1,8 @@
 // What can go wrong with an input mesh or a run, as one enum with one message per code.
 #pragma once
+#include <functional>
 #include <string>
+#include <utility>
 
 namespace lowstretch {
 
@@ -25,14 +27,20 @@ enum class ErrorCode {
 };
 
 struct Error {
-  ErrorCode code = ErrorCode::None;
-  long long count = 0;
+  Error(ErrorCode code = ErrorCode::None, long long count = 0, std::string detail = "", std::string option = "")
+      : code(code), count(count), detail(std::move(detail)), option(std::move(option)) {}
+  ErrorCode code;
+  long long count;
   std::string detail;  // extra words for InvalidOption and SolverFailed
+  std::string option;  // InvalidOption: the Options field at fault, as the core names it ("exponent")
   explicit operator bool() const { return code != ErrorCode::None; }
 };
 
 // One line for a person: what was found and what to do about it.
 std::string message(const Error& error);
+// The same, with the option at fault (InvalidOption) named as the caller's user knows it: a flag
+// of the tool, a parameter label of the filter. `name_of` maps the core's name to that.
+std::string message(const Error& error, const std::function<std::string(const std::string&)>& name_of);
 // Whether parameterizing the mesh as charts (charts.h) gets past this error: the caller then adds
 // how its user asks for charts.
 bool charts_would_help(ErrorCode code);

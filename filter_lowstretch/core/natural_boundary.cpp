@@ -18,27 +18,26 @@ double bounded_cot(const Eigen::RowVector3d& apex, const Eigen::RowVector3d& a, 
   return std::max(-limit, std::min(limit, c / s));
 }
 
-}  // namespace
+// The boundary vertex farthest from `from`.
+int farthest_boundary_vertex(const DiskMesh& disk, int from) {
+  int best = disk.boundary[0];
+  double best_d = -1;
+  for (int v : disk.boundary) {
+    const double d = (disk.V.row(v) - disk.V.row(from)).squaredNorm();
+    if (d > best_d) {
+      best_d = d;
+      best = v;
+    }
+  }
+  return best;
+}
 
-Error natural_boundary(const DiskMesh& disk, Eigen::MatrixXd& boundary_uv) {
+// Unknowns x = [u; v] (2n). Quadratic form Q = [L, -M/2; M/2, L]: L the cotangent Laplacian
+// (E_D(u) = u'Lu/2) and u'Mv = sum over boundary half-edges i->j of (u_i v_j - u_j v_i) = 2A.
+// x'Qx / 2 is the conformal energy E_D - A of least-squares conformal maps.
+Eigen::SparseMatrix<double> conformal_energy(const DiskMesh& disk) {
   const int n = int(disk.V.rows());
   const int nb = int(disk.boundary.size());
-  // Pins: the loop's first vertex and the boundary vertex farthest from it, then the one
-  // farthest from that (two sweeps approximate the diameter).
-  auto farthest_from = [&](int from) {
-    int best = disk.boundary[0];
-    double best_d = -1;
-    for (int v : disk.boundary) {
-      const double d = (disk.V.row(v) - disk.V.row(from)).squaredNorm();
-      if (d > best_d) { best_d = d; best = v; }
-    }
-    return best;
-  };
-  const int pin_a = farthest_from(disk.boundary[0]);
-  const int pin_b = farthest_from(pin_a);
-
-  // Unknowns x = [u; v] (2n). Quadratic form Q = [L, -M/2; M/2, L]: L the cotangent Laplacian
-  // (E_D(u) = u'Lu/2) and u'Mv = sum over boundary half-edges i->j of (u_i v_j - u_j v_i) = 2A.
   std::vector<Eigen::Triplet<double>> q;
   q.reserve(size_t(disk.F.rows()) * 24 + size_t(nb) * 4);
   for (Eigen::Index f = 0; f < disk.F.rows(); ++f)
@@ -63,6 +62,19 @@ Error natural_boundary(const DiskMesh& disk, Eigen::MatrixXd& boundary_uv) {
   }
   Eigen::SparseMatrix<double> Q(2 * n, 2 * n);
   Q.setFromTriplets(q.begin(), q.end());
+  return Q;
+}
+
+}  // namespace
+
+Error natural_boundary(const DiskMesh& disk, Eigen::MatrixXd& boundary_uv) {
+  const int n = int(disk.V.rows());
+  const int nb = int(disk.boundary.size());
+  // Pins: the boundary vertex farthest from the loop's first vertex, then the one farthest from
+  // that (two sweeps approximate the diameter).
+  const int pin_a = farthest_boundary_vertex(disk, disk.boundary[0]);
+  const int pin_b = farthest_boundary_vertex(disk, pin_a);
+  const Eigen::SparseMatrix<double> Q = conformal_energy(disk);
 
   // Eliminate the four pinned unknowns: Q_ff x_f = -Q_fp x_p.
   const double scale = (disk.V.row(pin_a) - disk.V.row(pin_b)).norm();

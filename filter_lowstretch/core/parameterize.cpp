@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <utility>
 
 #include "boundary_map.h"
@@ -22,16 +23,24 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// A number as a person writes it: 2, 0.5, 1e+30.
+std::string number_text(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
 Error check_options(const Options& o) {
   if (!(o.exponent > 0 && o.exponent <= 1))
-    return {ErrorCode::InvalidOption, 0, "the exponent must be in (0, 1], got " + std::to_string(o.exponent)};
-  if (o.max_passes < 0)
-    return {ErrorCode::InvalidOption, 0, "max passes must be 0 or more, got " + std::to_string(o.max_passes)};
+    return {ErrorCode::InvalidOption, 0, "must be in (0, 1], got " + number_text(o.exponent), "exponent"};
+  if (o.max_passes < 0 || o.max_passes > kMostPasses)
+    return {ErrorCode::InvalidOption, 0, "must be from 0 to " + std::to_string(kMostPasses) + ", got " +
+                                             std::to_string(o.max_passes), "max_passes"};
   const SolverOptions& s = o.solver;
   if (!(s.tolerance > 0 && s.tolerance < 1 && s.residual_accepted >= s.tolerance && s.max_iterations > 0 &&
         s.amg_minimum_rows >= 1))
-    return {ErrorCode::InvalidOption, 0, "the multigrid solver's settings are out of range (tolerance in (0, 1), "
-                                         "accepted residual at least the tolerance, at least one iteration)"};
+    return {ErrorCode::InvalidOption, 0, "are out of range (tolerance in (0, 1), accepted residual at least the "
+                                         "tolerance, at least one iteration)", "solver settings"};
   return {};
 }
 
@@ -78,6 +87,48 @@ Eigen::MatrixXd input_rows(const DiskMesh& disk, const Eigen::MatrixXd& uv, Eige
   return out;
 }
 
+// The metrics of one solved pass, with the time of each phase and what the solver did (the
+// caller adds the reweighting time and the pass number).
+PassMetrics measure_pass(const DiskMesh& disk, const Eigen::MatrixXd& uv, const FaceStretch& stretch,
+                         const SurfaceReference& reference, const SolveReport& solved) {
+  const Clock::time_point start = Clock::now();
+  PassMetrics m = measure(disk.F, disk.edges, uv, stretch, reference);
+  m.seconds_metrics = seconds_since(start);
+  m.seconds_assembly = solved.seconds_assembly;
+  m.seconds_factorization = solved.seconds_setup;
+  m.seconds_solve = solved.seconds_solve;
+  m.solver = solved.used;
+  m.solver_fell_back = solved.fell_back;
+  m.solver_iterations = solved.iterations;
+  m.solver_residual = solved.relative_residual;
+  return m;
+}
+
+void note_solver_fallbacks(Result& result) {
+  int fell_back = 0;
+  for (const PassMetrics& p : result.passes) fell_back += p.solver_fell_back;
+  if (fell_back > 0)
+    result.notes.push_back("multigrid did not converge in " + std::to_string(fell_back) + " of " +
+                           std::to_string(result.passes.size()) + " passes: the sparse LU solved them");
+}
+
+// The kept pass in the caller's rows: UV (scaled into [0,1]^2 if it left it), vertex and face
+// stretch.
+void keep_pass(const DiskMesh& disk, Eigen::MatrixXd uv, const FaceStretch& stretch, Eigen::Index vertex_rows,
+               Result& result) {
+  if (fit_into_unit_square(uv))
+    result.notes.push_back("negative weights put vertices outside the boundary: the map was scaled into [0,1]^2");
+  result.uv = input_rows(disk, uv, vertex_rows);
+  const int n = int(disk.V.rows());
+  result.vertex_stretch = Eigen::VectorXd::Zero(vertex_rows);
+  const Eigen::VectorXd sigma = vertex_stretch(disk.F, n, stretch);
+  for (int i = 0; i < n; ++i) result.vertex_stretch(disk.input_vertex[size_t(i)]) = sigma(i);
+  result.face_stretch.resize(disk.F.rows());
+  const double inf = std::numeric_limits<double>::infinity();
+  for (Eigen::Index f = 0; f < disk.F.rows(); ++f)
+    result.face_stretch(f) = stretch.valid(f) ? stretch.normalization * stretch.sigma(f) : inf;
+}
+
 Result failed(Error error) {
   Result result;
   result.error = std::move(error);
@@ -107,7 +158,7 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
                            "triangles): uniform weights used there");
 
   LaplacianSolver solver(disk, options.solver);
-  const SurfaceReference reference = surface_reference(disk);
+  const SurfaceReference reference = surface_reference(disk.V, disk.F, disk.edges);
   const int n = int(disk.V.rows());
   Eigen::MatrixXd uv, best_uv;
   FaceStretch stretch, best_stretch;
@@ -121,19 +172,10 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
     const double reweighting = seconds_since(phase);
     if (!solver.solve(weights, boundary_uv, uv) || !uv.allFinite())
       return failed({ErrorCode::SolverFailed, pass, "singular or non-finite system"});
-    phase = Clock::now();
     stretch = face_stretch(disk.V, disk.F, uv);
-    PassMetrics metrics = measure(disk, uv, stretch, reference);
+    PassMetrics metrics = measure_pass(disk, uv, stretch, reference, solver.report());
     metrics.pass = pass;
-    metrics.seconds_metrics = seconds_since(phase);
-    const SolveReport& solved = solver.report();
-    metrics.seconds_assembly = reweighting + solved.seconds_assembly;
-    metrics.seconds_factorization = solved.seconds_setup;
-    metrics.seconds_solve = solved.seconds_solve;
-    metrics.solver = solved.used;
-    metrics.solver_fell_back = solved.fell_back;
-    metrics.solver_iterations = solved.iterations;
-    metrics.solver_residual = solved.relative_residual;
+    metrics.seconds_assembly += reweighting;
     metrics.seconds = seconds_since(pass_start);
     result.passes.push_back(metrics);
     if (options.pass_uv) options.pass_uv(pass, input_rows(disk, uv, V.rows()));
@@ -150,21 +192,8 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
     }
   }
 
-  int fell_back = 0;
-  for (const PassMetrics& p : result.passes) fell_back += p.solver_fell_back;
-  if (fell_back > 0)
-    result.notes.push_back("multigrid did not converge in " + std::to_string(fell_back) + " of " +
-                           std::to_string(result.passes.size()) + " passes: the sparse LU solved them");
-  if (fit_into_unit_square(best_uv))
-    result.notes.push_back("negative weights put vertices outside the boundary: the map was scaled into [0,1]^2");
-  result.uv = input_rows(disk, best_uv, V.rows());
-  result.vertex_stretch = Eigen::VectorXd::Zero(V.rows());
-  const Eigen::VectorXd sigma = vertex_stretch(disk.F, n, best_stretch);
-  for (int i = 0; i < n; ++i) result.vertex_stretch(disk.input_vertex[size_t(i)]) = sigma(i);
-  result.face_stretch.resize(F.rows());
-  const double inf = std::numeric_limits<double>::infinity();
-  for (Eigen::Index f = 0; f < F.rows(); ++f)
-    result.face_stretch(f) = best_stretch.valid(f) ? best_stretch.normalization * best_stretch.sigma(f) : inf;
+  note_solver_fallbacks(result);
+  keep_pass(disk, best_uv, best_stretch, V.rows(), result);
   result.seconds_total = seconds_since(start);
   report(1.0, "done");
   return result;

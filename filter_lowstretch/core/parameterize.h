@@ -13,11 +13,13 @@
 
 namespace lowstretch {
 
+constexpr int kMostPasses = 1000;
+
 struct Options {
   BoundaryShape boundary = BoundaryShape::Square;
   InitialWeights weights = InitialWeights::Floater;
   double exponent = 1.0;  // eta in (0, 1]: weights are divided by sigma_j^eta each pass
-  int max_passes = 10;    // 0: U0 only; 1: U0 and U1
+  int max_passes = 10;    // 0: U0 only; 1: U0 and U1; at most kMostPasses
   bool stop_when_stretch_rises = true;  // false forces all max_passes (benchmarks)
   SolverOptions solver;  // how each pass is solved (solver_options.h)
   // Called with a fraction in [0, 1] and the current stage; return false to cancel the run.

@@ -58,6 +58,76 @@ int side_of(int position, const std::array<int, 4>& corners, int n) {
 
 }  // namespace
 
+namespace {
+
+// The loop positions nearest to the quarter arc lengths, strictly increasing.
+std::array<int, 4> quarter_corners(const std::vector<double>& arc, int n) {
+  const double perimeter = arc[size_t(n)];
+  std::array<int, 4> corners{};
+  for (int k = 0; k < 4; ++k) {
+    const double target = k * perimeter / 4;
+    const auto it = std::lower_bound(arc.begin(), arc.end() - 1, target);
+    int best = int(it - arc.begin());
+    if (best > 0 && (best == n || target - arc[size_t(best) - 1] < arc[size_t(best)] - target)) --best;
+    corners[size_t(k)] = std::min(best, n - 1);
+  }
+  for (int k = 1; k < 4; ++k)  // keep them strictly increasing on short loops
+    corners[size_t(k)] = std::max(corners[size_t(k)], corners[size_t(k) - 1] + 1);
+  return corners;
+}
+
+// With corner c0 at loop position s: places c1..c3 on the loop unrolled from s so that no arc
+// lies strictly between consecutive corners, minimizing the sum of squared differences of the
+// sides from a quarter of the perimeter (dynamic programming over positions). Lowers best_cost
+// and sets best when it finds a cheaper placement.
+void best_corners_from(int s, const std::vector<double>& arc, const std::vector<Arc>& arcs, double& best_cost,
+                       std::array<int, 4>& best) {
+  const int n = int(arc.size()) - 1;
+  const double perimeter = arc[size_t(n)], quarter = perimeter / 4;
+  const double inf = std::numeric_limits<double>::infinity();
+  const auto unrolled_arc = [&](int q) {  // arc length from s to unrolled position q in [0, n]
+    const int i = (s + q) % n;
+    double a = arc[size_t(i)] - arc[size_t(s)];
+    if (a < 0 || (q == n)) a += perimeter;
+    return a;
+  };
+  // must_start_after[q]: the largest first position of an arc that ends before q, so the
+  // previous corner must sit at or after it.
+  std::vector<int> must_start_after(size_t(n) + 1, 0);
+  for (const Arc& a : arcs) {
+    const int first = (a.first - s + n) % n;
+    if (first == 0 || first + a.count > n) continue;  // holds position 0, i.e. corner c0
+    const size_t after_last = size_t(first + a.count);
+    must_start_after[after_last] = std::max(must_start_after[after_last], first);
+  }
+  for (int q = 1; q <= n; ++q)
+    must_start_after[size_t(q)] = std::max(must_start_after[size_t(q)], must_start_after[size_t(q) - 1]);
+  // cost[k][q]: best sum of squared side-length errors with corner k at q.
+  std::vector<std::vector<double>> cost(4, std::vector<double>(size_t(n) + 1, inf));
+  std::vector<std::vector<int>> from(4, std::vector<int>(size_t(n) + 1, -1));
+  cost[0][0] = 0;
+  for (int k = 1; k <= 4; ++k) {
+    const int layer = k % 4;
+    for (int q = (k == 4 ? n : 1); q <= (k == 4 ? n : n - 1); ++q)
+      for (int p = must_start_after[size_t(q)]; p < q; ++p) {
+        const double c = cost[size_t(k - 1)][size_t(p)];
+        if (c == inf) continue;
+        const double side = unrolled_arc(q) - unrolled_arc(p) - quarter;
+        const double total = c + side * side;
+        if (k == 4 && total < best_cost) {
+          best_cost = total;
+          const int q3 = p, q2 = from[3][size_t(q3)], q1 = from[2][size_t(q2)];
+          best = {s, (s + q1) % n, (s + q2) % n, (s + q3) % n};
+        } else if (k < 4 && total < cost[size_t(layer)][size_t(q)]) {
+          cost[size_t(layer)][size_t(q)] = total;
+          from[size_t(layer)][size_t(q)] = p;
+        }
+      }
+  }
+}
+
+}  // namespace
+
 SquareCorners choose_square_corners(const DiskMesh& disk) {
   const int n = int(disk.boundary.size());
   SquareCorners result;
@@ -66,77 +136,21 @@ SquareCorners choose_square_corners(const DiskMesh& disk) {
     return result;
   }
   const std::vector<double> arc = boundary_arc_lengths(disk);
-  const double perimeter = arc[size_t(n)];
-  for (int k = 0; k < 4; ++k) {
-    const double target = k * perimeter / 4;
-    const auto it = std::lower_bound(arc.begin(), arc.end() - 1, target);
-    int best = int(it - arc.begin());
-    if (best > 0 && (best == n || target - arc[size_t(best) - 1] < arc[size_t(best)] - target)) --best;
-    result.corners[size_t(k)] = std::min(best, n - 1);
-  }
-  for (int k = 1; k < 4; ++k)  // keep them strictly increasing on short loops
-    result.corners[size_t(k)] = std::max(result.corners[size_t(k)], result.corners[size_t(k) - 1] + 1);
+  result.corners = quarter_corners(arc, n);
   const std::vector<Arc> arcs = arcs_needing_a_corner(disk);
   if (collapsed_chords(arcs, result.corners, n) == 0) return result;
-  // The search below costs about 3 n^2 steps per position of the shortest arc: past this many
+  // The search costs about 3 n^2 steps per position of the shortest arc: past this many
   // boundary vertices, bow the sides instead of searching.
   const int largest_searched_loop = 10000;
-
-  // Name the corner inside the shortest arc c0 and try each of its positions; then place c1..c3
-  // on the loop unrolled from c0 so that no arc lies strictly between consecutive corners.
+  // Name the corner inside the shortest arc c0 and try positions of it spread over the arc.
   const Arc shortest = *std::min_element(arcs.begin(), arcs.end(),
                                          [](const Arc& a, const Arc& b) { return a.count < b.count; });
-  const double quarter = perimeter / 4;
-  const double inf = std::numeric_limits<double>::infinity();
-  double best_cost = inf;
+  double best_cost = std::numeric_limits<double>::infinity();
   std::array<int, 4> best{};
-  const int tries = std::min(shortest.count, 32);  // positions of c0 tried, spread over the arc
-  for (int j = 0; j < tries && n <= largest_searched_loop; ++j) {
-    const int s = (shortest.first + int((long long)j * shortest.count / tries)) % n;
-    const auto unrolled_arc = [&](int q) {  // arc length from s to unrolled position q in [0, n]
-      const int i = (s + q) % n;
-      double a = arc[size_t(i)] - arc[size_t(s)];
-      if (a < 0 || (q == n)) a += perimeter;
-      return a;
-    };
-    // must_start_after[q]: the largest first position of an arc that ends before q, so the
-    // previous corner must sit at or after it.
-    std::vector<int> must_start_after(size_t(n) + 1, 0);
-    for (const Arc& a : arcs) {
-      const int first = (a.first - s + n) % n;
-      if (first == 0 || first + a.count > n) continue;  // holds position 0, i.e. corner c0
-      const size_t after_last = size_t(first + a.count);
-      must_start_after[after_last] = std::max(must_start_after[after_last], first);
-    }
-    for (int q = 1; q <= n; ++q)
-      must_start_after[size_t(q)] = std::max(must_start_after[size_t(q)], must_start_after[size_t(q) - 1]);
-    // cost[k][q]: best sum of squared side-length errors with corner k at q.
-    std::vector<std::vector<double>> cost(4, std::vector<double>(size_t(n) + 1, inf));
-    std::vector<std::vector<int>> from(4, std::vector<int>(size_t(n) + 1, -1));
-    cost[0][0] = 0;
-    for (int k = 1; k <= 4; ++k) {
-      const int layer = k % 4;
-      for (int q = (k == 4 ? n : 1); q <= (k == 4 ? n : n - 1); ++q) {
-        for (int p = must_start_after[size_t(q)]; p < q; ++p) {
-          const double c = cost[size_t(k - 1)][size_t(p)];
-          if (c == inf) continue;
-          const double side = unrolled_arc(q) - unrolled_arc(p) - quarter;
-          const double total = c + side * side;
-          if (k == 4) {
-            if (total < best_cost) {
-              best_cost = total;
-              int q3 = p, q2 = from[3][size_t(q3)], q1 = from[2][size_t(q2)];
-              best = {s, (s + q1) % n, (s + q2) % n, (s + q3) % n};
-            }
-          } else if (total < cost[size_t(layer)][size_t(q)]) {
-            cost[size_t(layer)][size_t(q)] = total;
-            from[size_t(layer)][size_t(q)] = p;
-          }
-        }
-      }
-    }
-  }
-  if (best_cost == inf) {  // more separate ears than corners: keep the quarter choice, bow sides
+  const int tries = std::min(shortest.count, 32);
+  for (int j = 0; j < tries && n <= largest_searched_loop; ++j)
+    best_corners_from((shortest.first + int((long long)j * shortest.count / tries)) % n, arc, arcs, best_cost, best);
+  if (best_cost == std::numeric_limits<double>::infinity()) {  // more separate ears than corners: bow sides
     result.collapsed_chords = collapsed_chords(arcs, result.corners, n);
     for (const Arc& a : arcs)
       if (!holds_a_corner(a, result.corners, n)) result.bow_side[size_t(side_of(a.first, result.corners, n))] = true;

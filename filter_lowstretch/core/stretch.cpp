@@ -98,33 +98,35 @@ double l2_stretch(const FaceStretch& s, const std::vector<int>& faces) {
   return l2_stretch_over(s, Eigen::Index(faces.size()), [&](Eigen::Index i) { return Eigen::Index(faces[size_t(i)]); }, false);
 }
 
-SurfaceReference surface_reference(const DiskMesh& disk) {
+SurfaceReference surface_reference(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXi& edges) {
   SurfaceReference r;
-  const Eigen::Index ne = disk.edges.rows(), nf = disk.F.rows();
+  const Eigen::Index ne = edges.rows(), nf = F.rows();
   r.edge_length.resize(ne);
   for (Eigen::Index e = 0; e < ne; ++e) {
-    r.edge_length(e) = (disk.V.row(disk.edges(e, 0)) - disk.V.row(disk.edges(e, 1))).norm();
+    r.edge_length(e) = (V.row(edges(e, 0)) - V.row(edges(e, 1))).norm();
     r.total_edge_length += r.edge_length(e);
   }
   r.corner_angle.resize(nf, 3);
   for (Eigen::Index f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k) {
-      const int i = disk.F(f, k), j = disk.F(f, (k + 1) % 3), l = disk.F(f, (k + 2) % 3);
-      const Eigen::Vector3d a = (disk.V.row(j) - disk.V.row(i)).transpose(), b = (disk.V.row(l) - disk.V.row(i)).transpose();
+      const int i = F(f, k), j = F(f, (k + 1) % 3), l = F(f, (k + 2) % 3);
+      const Eigen::Vector3d a = (V.row(j) - V.row(i)).transpose(), b = (V.row(l) - V.row(i)).transpose();
       r.corner_angle(f, k) = std::atan2(a.cross(b).norm(), a.dot(b));
     }
   return r;
 }
 
-PassMetrics measure(const DiskMesh& disk, const Eigen::MatrixXd& UV, const FaceStretch& s) {
-  return measure(disk, UV, s, surface_reference(disk));
+PassMetrics measure(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXi& edges,
+                    const Eigen::MatrixXd& UV, const FaceStretch& s) {
+  return measure(F, edges, UV, s, surface_reference(V, F, edges));
 }
 
-PassMetrics measure(const DiskMesh& disk, const Eigen::MatrixXd& UV, const FaceStretch& s, const SurfaceReference& reference) {
+PassMetrics measure(const Eigen::MatrixXi& F, const Eigen::MatrixXi& edges, const Eigen::MatrixXd& UV, const FaceStretch& s,
+                    const SurfaceReference& reference) {
   PassMetrics m;
   m.flipped = s.flipped;
   m.degenerate = s.degenerate;
-  const Eigen::Index nf = disk.F.rows();
+  const Eigen::Index nf = F.rows();
   const double total_3d = s.area_3d.sum(), total_uv = s.area_uv.cwiseAbs().sum();
   if (m.flipped + m.degenerate > 0) {
     m.l2_stretch = m.linf_stretch = kInf;
@@ -133,9 +135,9 @@ PassMetrics measure(const DiskMesh& disk, const Eigen::MatrixXd& UV, const FaceS
     m.linf_stretch = s.normalization * s.gamma.maxCoeff();
   }
 
-  const Eigen::Index ne = disk.edges.rows();
+  const Eigen::Index ne = edges.rows();
   Eigen::VectorXd lu(ne);
-  for (Eigen::Index e = 0; e < ne; ++e) lu(e) = (UV.row(disk.edges(e, 0)) - UV.row(disk.edges(e, 1))).norm();
+  for (Eigen::Index e = 0; e < ne; ++e) lu(e) = (UV.row(edges(e, 0)) - UV.row(edges(e, 1))).norm();
   const double length_uv = lu.sum();
   for (Eigen::Index e = 0; e < ne; ++e)
     m.edge_distortion += std::abs(reference.edge_length(e) / reference.total_edge_length - lu(e) / length_uv);
@@ -143,7 +145,7 @@ PassMetrics measure(const DiskMesh& disk, const Eigen::MatrixXd& UV, const FaceS
   double angle_sum = 0;
   for (Eigen::Index f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k) {
-      const int i = disk.F(f, k), j = disk.F(f, (k + 1) % 3), l = disk.F(f, (k + 2) % 3);
+      const int i = F(f, k), j = F(f, (k + 1) % 3), l = F(f, (k + 2) % 3);
       const double ax = UV(j, 0) - UV(i, 0), ay = UV(j, 1) - UV(i, 1), bx = UV(l, 0) - UV(i, 0), by = UV(l, 1) - UV(i, 1);
       angle_sum += std::abs(reference.corner_angle(f, k) - std::atan2(std::abs(ax * by - ay * bx), ax * bx + ay * by));
     }

@@ -4,7 +4,6 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "disk_mesh.h"
 #include "method_types.h"
 
 namespace lowstretch {
@@ -43,10 +42,14 @@ struct SurfaceReference {
   double total_edge_length = 0;
   Eigen::MatrixXd corner_angle;  // F x 3: the angle at corner k of face f
 };
-SurfaceReference surface_reference(const DiskMesh& disk);
+// V, F: the surface; edges: its undirected edges (#E x 2), each once.
+SurfaceReference surface_reference(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXi& edges);
 
 // The paper's metrics; stretch is infinite when a parameter triangle is flipped or degenerate.
-PassMetrics measure(const DiskMesh& disk, const Eigen::MatrixXd& UV, const FaceStretch& s, const SurfaceReference& reference);
-PassMetrics measure(const DiskMesh& disk, const Eigen::MatrixXd& UV, const FaceStretch& s);  // computes the reference
+// F, edges as for surface_reference; UV: #V x 2; s: face_stretch of the same map.
+PassMetrics measure(const Eigen::MatrixXi& F, const Eigen::MatrixXi& edges, const Eigen::MatrixXd& UV, const FaceStretch& s,
+                    const SurfaceReference& reference);
+PassMetrics measure(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXi& edges,
+                    const Eigen::MatrixXd& UV, const FaceStretch& s);  // computes the reference
 
 }  // namespace lowstretch

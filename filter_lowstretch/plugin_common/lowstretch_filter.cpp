@@ -113,10 +113,8 @@ Error make_options(int boundary, int weights, double exponent, int max_passes, i
   if (boundary < 0 || boundary >= int(p.boundary.entries.size())) return invalid_enum(p.boundary, boundary);
   if (weights < 0 || weights >= int(p.weights.entries.size())) return invalid_enum(p.weights, weights);
   if (non_disk < 0 || non_disk >= int(p.non_disk.entries.size())) return invalid_enum(p.non_disk, non_disk);
-  if (!(exponent > 0 && exponent <= 1))
-    return invalid(std::string(p.exponent.label) + " must be in (0, 1], got " + format("%g", exponent));
-  if (max_passes < 0)
-    return invalid(std::string(p.max_passes.label) + " must be 0 or more, got " + std::to_string(max_passes));
+  // The values themselves are checked by the core (Options), which names them; label_of turns
+  // its names into the dialog's labels.
   Options& options = charts.disk;
   options.boundary = kBoundaryValues[boundary];
   options.weights = kWeightsValues[weights];
@@ -124,6 +122,13 @@ Error make_options(int boundary, int weights, double exponent, int max_passes, i
   options.max_passes = max_passes;
   charts.non_disk = kNonDiskValues[non_disk];
   return {};
+}
+
+std::string label_of(const std::string& option) {
+  const Parameters& p = parameters();
+  if (option == "exponent") return p.exponent.label;
+  if (option == "max_passes") return p.max_passes.label;
+  return option;
 }
 
 std::string header_line(int vertices, int faces, const ChartOptions& charts) {

@@ -63,6 +63,8 @@ QStringList entries(const EnumParameter& p);
 // returns an InvalidOption error whose detail names the parameter by its label; options is then
 // left as it was.
 Error make_options(int boundary, int weights, double exponent, int max_passes, int non_disk, ChartOptions& options);
+// The dialog's label of an option the core names in an InvalidOption error ("exponent").
+std::string label_of(const std::string& option);
 
 // Maps MeshLab's progress callback (percent, stage; false cancels) to the core's.
 template <class CallBack>
@@ -112,7 +114,7 @@ Run run(const MeshType& m, const ChartOptions& options, const std::function<void
     return run;
   }
   if (run.result.error) {
-    run.error = message(run.result.error);
+    run.error = message(run.result.error, label_of);
     if (charts_would_help(run.result.error.code)) run.error += " (set \"Non-disk input\" to Make charts)";
     return run;
   }

@@ -85,11 +85,11 @@ std::string parse(int argc, char** argv, Arguments& a) {
       else if (v == "harmonic") a.charts.disk.weights = InitialWeights::Harmonic;
       else return "--weights takes floater, meanvalue or harmonic, not '" + v + "'";
     } else if (arg == "--exponent") {
-      if (!parse_number(argv[++i], a.charts.disk.exponent)) return "--exponent takes a number in (0, 1]";
-    } else if (arg == "--max-passes") {
+      if (!parse_number(argv[++i], a.charts.disk.exponent)) return "--exponent takes a number";
+    } else if (arg == "--max-passes") {  // the core checks the range (flag_of names it)
       double passes = 0;
-      if (!parse_number(argv[++i], passes) || passes != std::floor(passes) || passes < 0 || passes > 1000)
-        return "--max-passes takes a whole number from 0 to 1000";
+      if (!parse_number(argv[++i], passes) || passes != std::floor(passes) || std::abs(passes) > 1e9)
+        return "--max-passes takes a whole number";
       a.charts.disk.max_passes = int(passes);
     } else if (!arg.empty() && arg[0] == '-') return "unknown option " + arg;
     else if (a.input.empty()) a.input = arg;
@@ -97,6 +97,13 @@ std::string parse(int argc, char** argv, Arguments& a) {
   }
   if (a.input.empty()) return "no input file";
   return "";
+}
+
+// The tool's flag for an option the core names in an InvalidOption error.
+std::string flag_of(const std::string& option) {
+  if (option == "exponent") return "--exponent";
+  if (option == "max_passes") return "--max-passes";
+  return option;
 }
 
 // JSON has no infinity: a flipped map's stretch is written as null.
@@ -227,10 +234,13 @@ int main(int argc, char** argv) {
 
   const ChartsResult result = parameterize_charts(V, F, args.charts, pack_charts_with_vcglib);
   if (result.error) {
+    // An option value that the core refuses is a bad argument, as the usage says.
+    if (result.error.code == ErrorCode::InvalidOption) {
+      std::cerr << "lowstretch: " << message(result.error, flag_of) << "\n" << kUsage;
+      return kBadArguments;
+    }
     std::cerr << "lowstretch: " << args.input << ": " << message(result.error)
               << (charts_would_help(result.error.code) ? " (--non-disk charts)" : "") << "\n";
-    // An option value that the core refuses is a bad argument, as the usage says.
-    if (result.error.code == ErrorCode::InvalidOption) { std::cerr << kUsage; return kBadArguments; }
     return kRejected;
   }
   if (args.json) print_json(args, V, F, result);

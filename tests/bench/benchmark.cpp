@@ -114,7 +114,7 @@ CgalRun run_cgal(const DiskMesh& disk, Parameterize parameterize_with_cgal) {
   for (Eigen::Index i = 0; i < disk.V.rows(); ++i) UV.row(i) << uv[vertex[size_t(i)]].x(), uv[vertex[size_t(i)]].y();
   // CGAL may run the border the other way round: flips count against the majority orientation.
   if (face_stretch(disk.V, disk.F, UV).area_uv.sum() < 0) UV.col(0) = (1 - UV.col(0).array()).matrix();
-  run.metrics = measure(disk, UV, face_stretch(disk.V, disk.F, UV));
+  run.metrics = measure(disk.V, disk.F, disk.edges, UV, face_stretch(disk.V, disk.F, UV));
   return run;
 }
 

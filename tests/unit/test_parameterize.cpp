@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "core/parameterize.h"
 #include "core/stretch.h"
@@ -207,4 +208,26 @@ TEST(Parameterize, TextureCoordinatesStayInTheUnitSquareWithNegativeWeights) {
   const FaceStretch written = face_stretch(m.V, m.F, r.uv);
   for (Eigen::Index f = 0; f < m.F.rows(); ++f)
     if (written.valid(f)) EXPECT_NEAR(r.face_stretch(f), written.normalization * written.sigma(f), 1e-9 * r.face_stretch(f));
+}
+
+// The core checks every option value once and names the option; each caller renames it the way
+// its user knows it (the tool's flag, the filter's label).
+TEST(Parameterize, BadOptionsAreNamedTheWayTheCallerKnowsThem) {
+  const testmesh::Mesh m = testmesh::grid(5);
+  const auto flag = [](const std::string& option) { return "--" + option; };
+  Options o;
+  o.exponent = 2;
+  Result r = parameterize(m.V, m.F, o);
+  EXPECT_EQ(r.error.code, ErrorCode::InvalidOption);
+  EXPECT_EQ(r.error.option, "exponent");
+  EXPECT_EQ(message(r.error), "invalid option: exponent must be in (0, 1], got 2");
+  EXPECT_EQ(message(r.error, flag), "--exponent must be in (0, 1], got 2");
+  o = Options();
+  o.max_passes = kMostPasses + 1;
+  r = parameterize(m.V, m.F, o);
+  EXPECT_EQ(r.error.option, "max_passes");
+  EXPECT_EQ(message(r.error, flag), "--max_passes must be from 0 to 1000, got 1001");
+  // Other errors keep their own message.
+  const Result closed = parameterize(testmesh::octahedron().V, testmesh::octahedron().F);
+  EXPECT_EQ(message(closed.error, flag), message(closed.error));
 }

@@ -28,7 +28,7 @@ Measured measure_affine(const Eigen::Matrix2d& A) {
   EXPECT_FALSE(make_disk_mesh(m.V, m.F, disk));
   const Eigen::MatrixXd uv = disk.V.leftCols(2) * A.transpose();
   Measured r{face_stretch(disk.V, disk.F, uv), {}};
-  r.metrics = measure(disk, uv, r.faces);
+  r.metrics = measure(disk.V, disk.F, disk.edges, uv, r.faces);
   return r;
 }
 

@@ -85,6 +85,9 @@ check "used NaN vertex in OBJ named" 3 "$work/used_nan.obj" -o "$work/out.ply"
 check "missing file" 2 "$work/nothing.off" -o "$work/out.ply"
 check "bad option" 1 "$work/disk.off" --boundary triangle -o "$work/out.ply"
 check "bad exponent" 1 "$work/disk.off" --exponent 2 -o "$work/out.ply"
+grep -q -- "--exponent must be in (0, 1\], got 2" "$work/stderr" && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL message names --exponent"; }
+check "too many passes" 1 "$work/disk.off" --max-passes 1001 -o "$work/out.ply"
+grep -q -- "--max-passes must be from 0 to 1000, got 1001" "$work/stderr" && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL message names --max-passes"; }
 check "bad solver" 1 "$work/disk.off" --solver cg -o "$work/out.ply"
 check "direct solver" 0 "$work/disk.off" --solver direct -o "$work/out.ply"
 check "unwritable output" 4 "$work/disk.off" -o "$work/no/such/folder/out.ply"
