@@ -27,15 +27,7 @@ int FilterLowStretchPlugin::postCondition(QAction*) const { return plugin::writt
 MeshFilterInterface::FILTER_ARITY FilterLowStretchPlugin::filterArity(QAction*) const { return SINGLE_MESH; }
 
 void FilterLowStretchPlugin::initParameterSet(QAction*, MeshModel&, RichParameterList& parameters) {
-  const plugin::Parameters& p = plugin::parameters();
-  parameters.addParam(RichEnum(p.boundary.name, p.boundary.default_index, plugin::entries(p.boundary), p.boundary.label,
-                               p.boundary.tooltip));
-  parameters.addParam(RichFloat(p.exponent.name, float(p.exponent.default_value), p.exponent.label, p.exponent.tooltip));
-  parameters.addParam(RichInt(p.max_passes.name, p.max_passes.default_value, p.max_passes.label, p.max_passes.tooltip));
-  parameters.addParam(RichEnum(p.weights.name, p.weights.default_index, plugin::entries(p.weights), p.weights.label,
-                               p.weights.tooltip));
-  parameters.addParam(RichEnum(p.non_disk.name, p.non_disk.default_index, plugin::entries(p.non_disk), p.non_disk.label,
-                               p.non_disk.tooltip));
+  plugin::add_parameters<float, RichParameterList, RichEnum, RichFloat, RichInt>(parameters);
 }
 
 bool FilterLowStretchPlugin::fail(const std::string& message) {
@@ -49,13 +41,9 @@ bool FilterLowStretchPlugin::applyFilter(QAction*, MeshDocument& md, const RichP
   if (md.mm() == nullptr) return fail("no mesh is loaded");
   MeshModel& m = *md.mm();
 
-  const plugin::Parameters& p = plugin::parameters();
   lowstretch::ChartOptions options;
-  const lowstretch::Error invalid =
-      plugin::make_options(parameters.getEnum(p.boundary.name), parameters.getEnum(p.weights.name),
-                           parameters.getFloat(p.exponent.name), parameters.getInt(p.max_passes.name),
-                           parameters.getEnum(p.non_disk.name), options);
-  if (invalid) return fail(lowstretch::message(invalid));
+  if (const lowstretch::Error invalid = plugin::options_from(parameters, options))
+    return fail(lowstretch::message(invalid, plugin::label_of));
   options.disk.progress = plugin::progress(cb);
 
   const plugin::Run run = plugin::run(m.cm, options, [this](const std::string& line) { Log(line); });

@@ -35,17 +35,8 @@ int FilterLowStretchPlugin::postCondition(const QAction*) const { return plugin:
 FilterPlugin::FilterArity FilterLowStretchPlugin::filterArity(const QAction*) const { return SINGLE_MESH; }
 
 RichParameterList FilterLowStretchPlugin::initParameterList(const QAction*, const MeshModel&) {
-  const plugin::Parameters& p = plugin::parameters();
   RichParameterList parameters;
-  parameters.addParam(RichEnum(p.boundary.name, p.boundary.default_index, plugin::entries(p.boundary), p.boundary.label,
-                               p.boundary.tooltip));
-  parameters.addParam(
-      RichFloat(p.exponent.name, Scalarm(p.exponent.default_value), p.exponent.label, p.exponent.tooltip));
-  parameters.addParam(RichInt(p.max_passes.name, p.max_passes.default_value, p.max_passes.label, p.max_passes.tooltip));
-  parameters.addParam(RichEnum(p.weights.name, p.weights.default_index, plugin::entries(p.weights), p.weights.label,
-                               p.weights.tooltip));
-  parameters.addParam(RichEnum(p.non_disk.name, p.non_disk.default_index, plugin::entries(p.non_disk), p.non_disk.label,
-                               p.non_disk.tooltip));
+  plugin::add_parameters<Scalarm, RichParameterList, RichEnum, RichFloat, RichInt>(parameters);
   return parameters;
 }
 
@@ -60,13 +51,9 @@ std::map<std::string, QVariant> FilterLowStretchPlugin::applyFilter(const QActio
   if (md.mm() == nullptr) fail("no mesh is loaded");
   MeshModel& m = *md.mm();
 
-  const plugin::Parameters& p = plugin::parameters();
   lowstretch::ChartOptions options;
-  const lowstretch::Error invalid =
-      plugin::make_options(parameters.getEnum(p.boundary.name), parameters.getEnum(p.weights.name),
-                           parameters.getFloat(p.exponent.name), parameters.getInt(p.max_passes.name),
-                           parameters.getEnum(p.non_disk.name), options);
-  if (invalid) fail(lowstretch::message(invalid));
+  if (const lowstretch::Error invalid = plugin::options_from(parameters, options))
+    fail(lowstretch::message(invalid, plugin::label_of));
   options.disk.progress = plugin::progress(cb);
 
   const plugin::Run run = plugin::run(m.cm, options, [this](const std::string& line) { log(line); });

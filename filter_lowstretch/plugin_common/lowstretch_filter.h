@@ -16,6 +16,7 @@
 #include "filter_lowstretch/core/charts.h"
 #include "filter_lowstretch/core/error.h"
 #include "filter_lowstretch/core/parameterize.h"
+#include "filter_lowstretch/plugin_common/result_lines.h"
 #include "filter_lowstretch/vcg/mesh_arrays.h"
 #include "filter_lowstretch/vcg/pack_charts.h"
 
@@ -66,6 +67,27 @@ Error make_options(int boundary, int weights, double exponent, int max_passes, i
 // The dialog's label of an option the core names in an InvalidOption error ("exponent").
 std::string label_of(const std::string& option);
 
+// The filter's parameters into a MeshLab RichParameterList, in the dialog's order. Both plugin
+// APIs name their parameter classes alike; Scalar is the float type of the MeshLab build.
+template <class Scalar, class List, class Enum, class Float, class Int>
+void add_parameters(List& list) {
+  const Parameters& p = parameters();
+  list.addParam(Enum(p.boundary.name, p.boundary.default_index, entries(p.boundary), p.boundary.label, p.boundary.tooltip));
+  list.addParam(Float(p.exponent.name, Scalar(p.exponent.default_value), p.exponent.label, p.exponent.tooltip));
+  list.addParam(Int(p.max_passes.name, p.max_passes.default_value, p.max_passes.label, p.max_passes.tooltip));
+  list.addParam(Enum(p.weights.name, p.weights.default_index, entries(p.weights), p.weights.label, p.weights.tooltip));
+  list.addParam(Enum(p.non_disk.name, p.non_disk.default_index, entries(p.non_disk), p.non_disk.label, p.non_disk.tooltip));
+}
+
+// make_options from the values a MeshLab RichParameterList holds (getEnum, getFloat, getInt in
+// both APIs).
+template <class List>
+Error options_from(const List& values, ChartOptions& options) {
+  const Parameters& p = parameters();
+  return make_options(values.getEnum(p.boundary.name), values.getEnum(p.weights.name), values.getFloat(p.exponent.name),
+                      values.getInt(p.max_passes.name), values.getEnum(p.non_disk.name), options);
+}
+
 // Maps MeshLab's progress callback (percent, stage; false cancels) to the core's.
 template <class CallBack>
 std::function<bool(double, const char*)> progress(CallBack* cb) {
@@ -74,11 +96,8 @@ std::function<bool(double, const char*)> progress(CallBack* cb) {
   };
 }
 
-// Log lines, exactly as both adapters write them.
+// Log lines, exactly as both adapters write them (and result_lines.h for the run itself).
 std::string header_line(int vertices, int faces, const ChartOptions& options);
-// A disk: every pass, the kept pass, notes. Charts: each chart, then the charts, seams, coverage
-// and the metrics of the whole layout.
-std::vector<std::string> result_lines(const ChartsResult& result);
 std::string failure_line(const std::string& message);           // "<filter name> failed: <message>"
 
 // The filter's output values (pymeshlab returns them as a dict): metrics of the kept pass (of the

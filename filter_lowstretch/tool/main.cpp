@@ -11,6 +11,7 @@
 
 #include "../core/charts.h"
 #include "../core/parameterize.h"
+#include "../plugin_common/result_lines.h"
 #include "../vcg/mesh_arrays.h"
 #include "../vcg/pack_charts.h"
 #include "mesh_io.h"
@@ -174,38 +175,6 @@ void print_json(const Arguments& a, const Eigen::MatrixXd& V, const Eigen::Matri
   std::cout << o.str();
 }
 
-void print_table(const Result& r) {
-  std::printf("pass   L2 stretch  Linf stretch   edge    angle    area   flips  zero-area  seconds  solver\n");
-  for (const PassMetrics& p : r.passes) {
-    char solver[32];  // "amg 7" (iterations), "direct", or "direct*" where multigrid fell back
-    if (p.solver == LinearSolver::Amg) std::snprintf(solver, sizeof solver, "amg %d", p.solver_iterations);
-    else std::snprintf(solver, sizeof solver, "direct%s", p.solver_fell_back ? "*" : "");
-    std::printf("%4d %12.4f %12.4g %7.4f %7.4f %7.4f %7d %9d %8.3f  %-7s%s\n", p.pass, p.l2_stretch, p.linf_stretch,
-                p.edge_distortion, p.angle_distortion, p.area_distortion, p.flipped, p.degenerate, p.seconds, solver,
-                p.pass == r.chosen_pass ? "  <- kept" : "");
-  }
-  std::printf("kept pass %d (%s); %.3f s\n", r.chosen_pass, to_string(r.stop_reason), r.seconds_total);
-  for (const std::string& note : r.notes) std::printf("note: %s\n", note.c_str());
-}
-
-void print_charts_table(const ChartsResult& c) {
-  std::printf("chart  faces  holes closed  seam length  L2 stretch  kept pass\n");
-  for (size_t i = 0; i < c.charts.size(); ++i) {
-    const Chart& ch = c.charts[i];
-    std::printf("%5zu %6d %13d %12.4g %11.4f %10d\n", i, ch.faces, ch.closed_holes, ch.seam_length, ch.l2_stretch,
-                ch.chosen_pass);
-  }
-  for (const LayoutPass& lp : c.passes)
-    std::printf("pass %d over all charts: L2 stretch %.4f, flips %d, zero-area %d\n", lp.pass, lp.l2_stretch, lp.flipped,
-                lp.degenerate);
-  const PassMetrics& p = c.layout;
-  std::printf("%zu charts, seam length %.4g, coverage %.4f; whole layout: L2 stretch %.4f, Linf stretch %.4g, edge %.4f, "
-              "angle %.4f, area %.4f, flips %d, zero-area %d; %.3f s\n",
-              c.charts.size(), c.seam_length, c.coverage, p.l2_stretch, p.linf_stretch, p.edge_distortion,
-              p.angle_distortion, p.area_distortion, p.flipped, p.degenerate, c.seconds_total);
-  for (const std::string& note : c.notes) std::printf("note: %s\n", note.c_str());
-}
-
 // The texture the output names: the project's checkerboard, copied beside the output once the
 // mesh is written.
 const char* kTexture = "checkerboard.png";
@@ -244,8 +213,8 @@ int main(int argc, char** argv) {
     return kRejected;
   }
   if (args.json) print_json(args, V, F, result);
-  else if (result.input_is_disk) print_table(result.disk);
-  else print_charts_table(result);
+  else
+    for (const std::string& line : result_lines(result)) std::printf("%s\n", line.c_str());
 
   if (!args.output.empty()) {
     if (result.input_is_disk) write_parameterization(mesh, rows, result.disk);

@@ -1,0 +1,69 @@
+#include "result_lines.h"
+
+#include <cstdarg>
+#include <cstdio>
+
+namespace lowstretch {
+
+std::string format(const char* f, ...) {
+  char buffer[4096];  // as MeshLab's log, which formats with snprintf into 4096 bytes
+  va_list args;
+  va_start(args, f);
+  std::vsnprintf(buffer, sizeof buffer, f, args);
+  va_end(args);
+  return buffer;
+}
+
+namespace {
+
+// "multigrid, 8 iterations", "direct", or "direct (multigrid did not converge)".
+std::string solver_text(const PassMetrics& p) {
+  if (p.solver == LinearSolver::Amg) return format("multigrid, %d iterations", p.solver_iterations);
+  return p.solver_fell_back ? "direct (multigrid did not converge)" : "direct";
+}
+
+std::vector<std::string> disk_lines(const Result& result) {
+  std::vector<std::string> lines;
+  for (const PassMetrics& p : result.passes)
+    lines.push_back(format("pass %d: L2 stretch %.6g, Linf stretch %.6g, edge distortion %.6g, angle distortion %.6g, "
+                           "area distortion %.6g, flipped %d, degenerate %d, %.3f s, %s",
+                           p.pass, p.l2_stretch, p.linf_stretch, p.edge_distortion, p.angle_distortion,
+                           p.area_distortion, p.flipped, p.degenerate, p.seconds, solver_text(p).c_str()));
+  const PassMetrics& kept = result.passes.at(size_t(result.chosen_pass));
+  lines.push_back(format("kept pass %d (L2 stretch %.6g); stop reason: %s; total %.3f s", kept.pass, kept.l2_stretch,
+                         to_string(result.stop_reason), result.seconds_total));
+  for (const std::string& note : result.notes) lines.push_back("note: " + note);
+  return lines;
+}
+
+std::vector<std::string> chart_lines(const ChartsResult& result) {
+  std::vector<std::string> lines;
+  const size_t shown = 20;  // a mesh of many parts would flood the log
+  for (size_t i = 0; i < result.charts.size() && i < shown; ++i) {
+    const Chart& c = result.charts[i];
+    lines.push_back(format("chart %zu: %d faces, %d holes closed, seam length %.6g, L2 stretch %.6g, kept pass %d of %d",
+                           i, c.faces, c.closed_holes, c.seam_length, c.l2_stretch, c.chosen_pass, c.passes - 1));
+  }
+  if (result.charts.size() > shown) lines.push_back(format("... and %zu more charts", result.charts.size() - shown));
+  for (const LayoutPass& lp : result.passes)
+    lines.push_back(format("pass %d over all charts (a chart that stopped counts with its kept pass): L2 stretch %.6g, "
+                           "flipped %d, degenerate %d",
+                           lp.pass, lp.l2_stretch, lp.flipped, lp.degenerate));
+  const PassMetrics& p = result.layout;
+  lines.push_back(format("%zu charts, seam length %.6g, coverage %.4f; whole layout: L2 stretch %.6g, Linf stretch %.6g, "
+                         "edge distortion %.6g, angle distortion %.6g, area distortion %.6g, flipped %d, degenerate %d; "
+                         "total %.3f s",
+                         result.charts.size(), result.seam_length, result.coverage, p.l2_stretch, p.linf_stretch,
+                         p.edge_distortion, p.angle_distortion, p.area_distortion, p.flipped, p.degenerate,
+                         result.seconds_total));
+  for (const std::string& note : result.notes) lines.push_back("note: " + note);
+  return lines;
+}
+
+}  // namespace
+
+std::vector<std::string> result_lines(const ChartsResult& result) {
+  return result.input_is_disk ? disk_lines(result.disk) : chart_lines(result);
+}
+
+}  // namespace lowstretch
