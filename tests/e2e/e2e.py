@@ -34,6 +34,7 @@ import xml.etree.ElementTree as ET
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 import generate  # noqa: E402
 import meshio  # noqa: E402
+from stretch_formula import edges_and_area, face_sigma  # noqa: E402
 
 FILTER = "Low-stretch parameterization"
 MLX = {"square": "lowstretch.mlx", "circle": "lowstretch_circle.mlx", "natural": "lowstretch_natural.mlx"}
@@ -201,18 +202,6 @@ HALF_ULP = 2.0 ** -25  # largest rounding error of a texcoord in [0, 1] stored a
 STEP = 1e-9            # finite-difference step for the sensitivity to that rounding
 
 
-def face_sigma(e1, e2, uv):
-    """Stretch sqrt((a + c) / 2) of a triangle with 3D edge vectors e1 = p2 - p1, e2 = p3 - p1 and
-    texcoords uv = (s1, t1, s2, t2, s3, t3), and its parameter area A_U; inf when A_U <= 0."""
-    s1, t1, s2, t2, s3, t3 = uv
-    area_u = 0.5 * ((s2 - s1) * (t3 - t1) - (s3 - s1) * (t2 - t1))
-    if area_u <= 0:
-        return math.inf, area_u
-    ss = [(e1[c] * (t3 - t1) - e2[c] * (t2 - t1)) / (2 * area_u) for c in range(3)]
-    st = [(e2[c] * (s2 - s1) - e1[c] * (s3 - s1)) / (2 * area_u) for c in range(3)]
-    return math.sqrt(0.5 * (sum(x * x for x in ss) + sum(x * x for x in st))), area_u
-
-
 class Stretch:
     """The stretch of a saved parameterization (filter_lowstretch/core/METHOD.md section 2), recomputed from the
     PLY's float positions and texcoords, with a bound on how far the float rounding of the
@@ -225,11 +214,7 @@ class Stretch:
         face_raw, face_err, face_area = [], [], []
         total_a = total_au = total_au_err = 0.0
         for i, j, k in faces:
-            p1, p2, p3 = vertices[i], vertices[j], vertices[k]
-            e1 = [p2[c] - p1[c] for c in range(3)]
-            e2 = [p3[c] - p1[c] for c in range(3)]
-            cross = (e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0])
-            area = 0.5 * math.sqrt(sum(x * x for x in cross))
+            e1, e2, area = edges_and_area(vertices[i], vertices[j], vertices[k])
             tc = (*uv[i], *uv[j], *uv[k])
             sigma, area_u = face_sigma(e1, e2, tc)
             err = 0.0

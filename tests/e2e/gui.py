@@ -10,6 +10,7 @@ every step are kept in DIR (lowstretch_gui.png is the final one); xdotool drives
 ImageMagick's `import` takes the pictures.
 """
 import argparse
+import hashlib
 import os
 import shutil
 import subprocess
@@ -70,10 +71,25 @@ class Gui:
             time.sleep(0.25)
         return None
 
+    def settle(self, timeout=10):
+        """Waits until the screen stops changing (two grabs 0.2 s apart are equal): the GUI has
+        handled what it was sent and drawn the result. Returns False if it kept changing."""
+        end = time.time() + timeout
+        previous = None
+        while time.time() < end:
+            grab = subprocess.run(["import", "-window", "root", "-depth", "8", "rgb:-"], env=self.env,
+                                  capture_output=True, timeout=60).stdout
+            digest = hashlib.sha1(grab).hexdigest()
+            if digest == previous:
+                return True
+            previous = digest
+            time.sleep(0.2)
+        return False
+
     def key(self, *keys):
         for key in keys:
             self.run("xdotool", "key", key)
-            time.sleep(0.3)
+            self.settle()
 
     def screenshot(self, name):
         path = os.path.join(self.work, name)
@@ -142,7 +158,7 @@ def main():
             return 1
         gui.run("xdotool", "windowsize", main_window, "1120", "1000")  # no window manager: size it ourselves
         gui.run("xdotool", "windowfocus", "--sync", main_window)
-        time.sleep(1)
+        gui.settle()
         gui.screenshot("01_loaded.png")
 
         # Filters (Alt+L); Texture is the second last entry (Up from the top wraps to Camera, the
@@ -155,13 +171,13 @@ def main():
             gui.screenshot("03_no_dialog.png")
             return 1
         gui.run("xdotool", "windowmove", dialog, "1130", "0")  # beside the main window, not over the mesh
-        time.sleep(1)
+        gui.settle()
         gui.screenshot("03_dialog.png")
 
         gui.run("xdotool", "windowfocus", "--sync", dialog)
         gui.key("space")  # the dialog's Apply button has the focus
         outcome = wait_for_text(log, [f"Applied filter {FILTER}", "Filter failed"], 300)
-        time.sleep(2)  # let the view redraw with the texture
+        gui.settle()  # the view redrawn with the texture
         gui.screenshot("lowstretch_gui.png")
         with open(log, errors="replace") as f:
             text = f.read()

@@ -23,6 +23,9 @@ import re
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "e2e"))
+from stretch_formula import map_stretch  # noqa: E402
+
 PYMESHLAB = "pymeshlab==2025.7.post1"
 NAME = "compute_texcoord_parametrization_low_stretch"
 KEYS = {"l2_stretch": float, "linf_stretch": float, "edge_distortion": float, "angle_distortion": float,
@@ -54,18 +57,9 @@ def venv_python(venv):
 
 
 def stretch(np, V, F, wedge_uv):
-    """Per-face stretch sigma(T) and the L2 stretch of a parameterization, normalized as the core
-    does (filter_lowstretch/core/METHOD.md section 2), from 3D positions and per-wedge texcoords (3 rows per face)."""
-    p1, p2, p3 = V[F[:, 0]], V[F[:, 1]], V[F[:, 2]]
-    uv = wedge_uv.reshape(-1, 3, 2)
-    s1, t1, s2, t2, s3, t3 = uv[:, 0, 0], uv[:, 0, 1], uv[:, 1, 0], uv[:, 1, 1], uv[:, 2, 0], uv[:, 2, 1]
-    area_u = 0.5 * ((s2 - s1) * (t3 - t1) - (s3 - s1) * (t2 - t1))
-    ss = (p1 * (t2 - t3)[:, None] + p2 * (t3 - t1)[:, None] + p3 * (t1 - t2)[:, None]) / (2 * area_u)[:, None]
-    st = (p1 * (s3 - s2)[:, None] + p2 * (s1 - s3)[:, None] + p3 * (s2 - s1)[:, None]) / (2 * area_u)[:, None]
-    sigma = np.sqrt(0.5 * ((ss * ss).sum(1) + (st * st).sum(1)))
-    area = 0.5 * np.linalg.norm(np.cross(p2 - p1, p3 - p1), axis=1)
-    scale = np.sqrt(np.abs(area_u).sum() / area.sum())
-    return area_u, scale * sigma, scale * np.sqrt((area * sigma ** 2).sum() / area.sum()), area
+    """stretch_formula.map_stretch (the Python tests' one stretch) over numpy arrays, as arrays."""
+    area_u, sigma, l2, area = map_stretch(V.tolist(), F.tolist(), wedge_uv.tolist())
+    return np.array(area_u), np.array(sigma), l2, np.array(area)
 
 
 def inside(args):
