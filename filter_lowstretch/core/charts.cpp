@@ -182,8 +182,8 @@ ChartsResult from_disk(const Eigen::MatrixXi& F, Result disk) {
   for (Eigen::Index f = 0; f < F.rows(); ++f)
     for (int k = 0; k < 3; ++k) result.corner_uv.block(f, 2 * k, 1, 2) = disk.uv.row(F(f, k));
   result.face_chart.assign(size_t(F.rows()), 0);
-  result.face_stretch = disk.face_stretch;
-  result.vertex_stretch = disk.vertex_stretch;
+  result.face_stretch = std::move(disk.face_stretch);
+  result.vertex_stretch = std::move(disk.vertex_stretch);
   result.layout = disk.passes.at(size_t(disk.chosen_pass));
   for (const PassMetrics& p : disk.passes) result.passes.push_back({p.pass, p.l2_stretch, p.flipped, p.degenerate});
   Chart chart;
@@ -195,8 +195,10 @@ ChartsResult from_disk(const Eigen::MatrixXi& F, Result disk) {
   for (Eigen::Index f = 0; f < F.rows(); ++f)
     result.coverage += std::abs(uv_area(disk.uv.row(F(f, 0)), disk.uv.row(F(f, 1)), disk.uv.row(F(f, 2))));
   result.seconds_total = disk.seconds_total;
-  result.notes = disk.notes;
-  result.disk = std::move(disk);
+  result.notes = std::move(disk.notes);
+  result.disk_passes = std::move(disk.passes);
+  result.chosen_pass = disk.chosen_pass;
+  result.stop_reason = disk.stop_reason;
   return result;
 }
 

@@ -57,8 +57,12 @@ struct ChartsResult {
   double seam_length = 0;                 // sum over the charts
   double coverage = 0;                    // fraction of the unit square covered by the charts
   double seconds_total = 0;
-  bool input_is_disk = false;             // then `disk` is parameterize's result, unchanged
-  Result disk;
+  // A disk input is one chart: parameterize's map of the whole mesh, in the fields above. How
+  // its passes went (empty for charts, whose passes are per chart and summed up in `passes`):
+  bool input_is_disk = false;
+  std::vector<PassMetrics> disk_passes;   // every pass computed, including a rejected last one
+  int chosen_pass = 0;                    // index into disk_passes of the kept pass (= layout)
+  StopReason stop_reason = StopReason::MaxPasses;
   std::vector<std::string> notes;
 };
 

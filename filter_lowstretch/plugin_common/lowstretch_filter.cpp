@@ -135,8 +135,8 @@ std::vector<OutputValue> output_values(const ChartsResult& charts) {
   // A disk reports its kept pass; charts report the whole layout, each chart having kept its own
   // pass (kept_pass -1, passes summed over the charts, no single initial stretch).
   const bool disk = charts.input_is_disk;
-  const PassMetrics& p = disk ? charts.disk.passes.at(size_t(charts.disk.chosen_pass)) : charts.layout;
-  int passes = int(charts.disk.passes.size());  // computed, including a rejected last one
+  const PassMetrics& p = charts.layout;  // a disk's kept pass
+  int passes = int(charts.disk_passes.size());  // computed, including a rejected last one
   if (!disk) {
     passes = 0;
     for (const Chart& c : charts.charts) passes += c.passes;
@@ -151,7 +151,7 @@ std::vector<OutputValue> output_values(const ChartsResult& charts) {
       integer("degenerate", p.degenerate),
       integer("kept_pass", disk ? p.pass : -1),
       integer("passes", passes),
-      real("initial_l2_stretch", disk ? charts.disk.passes.front().l2_stretch : std::nan("")),
+      real("initial_l2_stretch", disk ? charts.disk_passes.front().l2_stretch : std::nan("")),
       real("seconds", charts.seconds_total),
       integer("charts", int(charts.charts.size())),
       real("seam_length", charts.seam_length),

@@ -141,12 +141,10 @@ Run run(const MeshType& m, const ChartOptions& options, const std::function<void
   return run;
 }
 
-// Writes a successful run into the mesh (per-vertex texcoords of a disk; one of the wedges' for
-// charts).
+// Writes a successful run into the mesh.
 template <class MeshType>
 void write_result(MeshType& m, const Run& run) {
-  if (run.result.input_is_disk) write_parameterization(m, run.rows, run.result.disk);
-  else write_chart_parameterization(m, run.rows, run.result);
+  write_parameterization(m, run.rows, run.result);
 }
 
 // The checkerboard texture: "filter_lowstretch/checkerboard.png" next to the plugin file (it is

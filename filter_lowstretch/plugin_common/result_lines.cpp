@@ -22,14 +22,14 @@ std::string solver_text(const PassMetrics& p) {
   return p.solver_fell_back ? "direct (multigrid did not converge)" : "direct";
 }
 
-std::vector<std::string> disk_lines(const Result& result) {
+std::vector<std::string> disk_lines(const ChartsResult& result) {
   std::vector<std::string> lines;
-  for (const PassMetrics& p : result.passes)
+  for (const PassMetrics& p : result.disk_passes)
     lines.push_back(format("pass %d: L2 stretch %.6g, Linf stretch %.6g, edge distortion %.6g, angle distortion %.6g, "
                            "area distortion %.6g, flipped %d, degenerate %d, %.3f s, %s",
                            p.pass, p.l2_stretch, p.linf_stretch, p.edge_distortion, p.angle_distortion,
                            p.area_distortion, p.flipped, p.degenerate, p.seconds, solver_text(p).c_str()));
-  const PassMetrics& kept = result.passes.at(size_t(result.chosen_pass));
+  const PassMetrics& kept = result.disk_passes.at(size_t(result.chosen_pass));
   lines.push_back(format("kept pass %d (L2 stretch %.6g); stop reason: %s; total %.3f s", kept.pass, kept.l2_stretch,
                          to_string(result.stop_reason), result.seconds_total));
   for (const std::string& note : result.notes) lines.push_back("note: " + note);
@@ -63,7 +63,7 @@ std::vector<std::string> chart_lines(const ChartsResult& result) {
 }  // namespace
 
 std::vector<std::string> result_lines(const ChartsResult& result) {
-  return result.input_is_disk ? disk_lines(result.disk) : chart_lines(result);
+  return result.input_is_disk ? disk_lines(result) : chart_lines(result);
 }
 
 }  // namespace lowstretch

@@ -148,10 +148,9 @@ void print_json(const Arguments& a, const Eigen::MatrixXd& V, const Eigen::Matri
     << "\", \"exponent\": " << number(a.charts.disk.exponent)
     << ", \"solver\": \"" << to_string(a.charts.disk.solver.method) << "\", \"max_passes\": " << a.charts.disk.max_passes;
   if (c.input_is_disk) {
-    const Result& r = c.disk;
     o << ",\n \"passes\": [";
-    for (size_t i = 0; i < r.passes.size(); ++i) o << (i ? ",\n  " : "\n  ") << pass_json(r.passes[i]);
-    o << "],\n \"chosen_pass\": " << r.chosen_pass << ", \"stop_reason\": " << quoted(to_string(r.stop_reason));
+    for (size_t i = 0; i < c.disk_passes.size(); ++i) o << (i ? ",\n  " : "\n  ") << pass_json(c.disk_passes[i]);
+    o << "],\n \"chosen_pass\": " << c.chosen_pass << ", \"stop_reason\": " << quoted(to_string(c.stop_reason));
   }
   if (a.charts.non_disk == NonDisk::Charts) {
     o << ",\n \"non_disk\": \"charts\", \"input_is_disk\": " << (c.input_is_disk ? "true" : "false")
@@ -217,8 +216,7 @@ int main(int argc, char** argv) {
     for (const std::string& line : result_lines(result)) std::printf("%s\n", line.c_str());
 
   if (!args.output.empty()) {
-    if (result.input_is_disk) write_parameterization(mesh, rows, result.disk);
-    else write_chart_parameterization(mesh, rows, result);
+    write_parameterization(mesh, rows, result);
     if (!write_mesh(args.output, mesh, kTexture, error)) {
       std::cerr << "lowstretch: " << error << "\n";
       return kCannotWrite;
@@ -228,7 +226,7 @@ int main(int argc, char** argv) {
   if (!args.svg.empty()) {
     std::ostringstream title;
     title << args.input.substr(args.input.find_last_of('/') + 1) << ": " << to_string(args.charts.disk.boundary);
-    if (result.input_is_disk) title << ", pass " << result.disk.chosen_pass;
+    if (result.input_is_disk) title << ", pass " << result.chosen_pass;
     else title << ", " << result.charts.size() << " charts";
     title << ", L2 stretch " << result.layout.l2_stretch;
     // Three UV rows per face, so that seams show as they are.

@@ -86,139 +86,174 @@ class Body {
   std::string token_;
 };
 
-}  // namespace
+// One header line after "ply": format, element, property, comment. Returns false with the
+// reason in error; sets done at end_header.
+bool read_header_line(const std::string& line, int number, long long file_size, Format& format, bool& has_format,
+                      std::vector<Element>& elements, bool& done, std::string& error) {
+  if (line.find('\0') != std::string::npos) { error = "line " + std::to_string(number) + ": a NUL byte in the PLY header"; return false; }
+  std::istringstream words(line);
+  std::string keyword, a, b, c, d;
+  words >> keyword;
+  const std::string where = "line " + std::to_string(number) + " of the PLY header: ";
+  if (keyword == "end_header") { done = true; return true; }
+  if (keyword.empty() || keyword == "comment" || keyword == "obj_info") return true;
+  if (keyword == "format") {
+    words >> a >> b;
+    if (a == "ascii") format = Format::Ascii;
+    else if (a == "binary_little_endian") format = Format::Little;
+    else if (a == "binary_big_endian") format = Format::Big;
+    else { error = where + "unknown format '" + a + "'"; return false; }
+    has_format = true;
+  } else if (keyword == "element") {
+    Element e;
+    char* end = nullptr;
+    if (!(words >> e.name >> a)) { error = where + "an element needs a name and a count"; return false; }
+    errno = 0;
+    e.count = std::strtoll(a.c_str(), &end, 10);
+    if (errno != 0 || *end != '\0' || e.count < 0 || e.count > file_size) {
+      error = where + "element '" + e.name + "' has a malformed count or one larger than the file";
+      return false;
+    }
+    for (const Element& other : elements)
+      if (other.name == e.name) { error = where + "element '" + e.name + "' is declared twice"; return false; }
+    elements.push_back(e);
+  } else if (keyword == "property") {
+    if (elements.empty()) { error = where + "a property before any element"; return false; }
+    Property p;
+    words >> a;
+    if (a == "list") {
+      p.list = true;
+      if (!(words >> b >> c >> d) || !parse_type(b, p.count_type, p.count_signed) || p.count_type < 0 ||
+          !parse_type(c, p.type, p.is_signed)) {
+        error = where + "a list property needs an integer count type, a value type and a name";
+        return false;
+      }
+      p.name = d;
+    } else if (!parse_type(a, p.type, p.is_signed) || !(words >> p.name)) {
+      error = where + "a property needs a known type and a name";
+      return false;
+    }
+    elements.back().properties.push_back(p);
+  } else {
+    error = where + "unknown keyword '" + keyword + "'";
+    return false;
+  }
+  return true;
+}
 
-bool read_ply(const std::string& path, long long file_size, ToolMesh& mesh, std::string& error) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) { error = "cannot open the file"; return false; }
+// The header, up to end_header: the body's format and its elements.
+bool read_header(std::istream& in, long long file_size, Format& format, std::vector<Element>& elements, std::string& error) {
   std::string line;
   if (!std::getline(in, line) || line.compare(0, 3, "ply") != 0 || line.find_first_not_of(" \t\r", 3) != std::string::npos) {
     error = "not a PLY file (no ply header)";
     return false;
   }
-  Format format = Format::Ascii;
-  bool has_format = false;
-  std::vector<Element> elements;
-  for (int number = 2;; ++number) {
+  bool has_format = false, done = false;
+  for (int number = 2; !done; ++number) {
     if (!std::getline(in, line)) { error = "the PLY header never ends (no end_header)"; return false; }
     if (number > 10000 || line.size() > 10000) { error = "the PLY header is too long"; return false; }
-    if (line.find('\0') != std::string::npos) { error = "line " + std::to_string(number) + ": a NUL byte in the PLY header"; return false; }
-    std::istringstream words(line);
-    std::string keyword, a, b, c, d;
-    words >> keyword;
-    const std::string where = "line " + std::to_string(number) + " of the PLY header: ";
-    if (keyword == "end_header") break;
-    if (keyword.empty() || keyword == "comment" || keyword == "obj_info") continue;
-    if (keyword == "format") {
-      words >> a >> b;
-      if (a == "ascii") format = Format::Ascii;
-      else if (a == "binary_little_endian") format = Format::Little;
-      else if (a == "binary_big_endian") format = Format::Big;
-      else { error = where + "unknown format '" + a + "'"; return false; }
-      has_format = true;
-    } else if (keyword == "element") {
-      Element e;
-      char* end = nullptr;
-      if (!(words >> e.name >> a)) { error = where + "an element needs a name and a count"; return false; }
-      errno = 0;
-      e.count = std::strtoll(a.c_str(), &end, 10);
-      if (errno != 0 || *end != '\0' || e.count < 0 || e.count > file_size) {
-        error = where + "element '" + e.name + "' has a malformed count or one larger than the file";
-        return false;
-      }
-      for (const Element& other : elements)
-        if (other.name == e.name) { error = where + "element '" + e.name + "' is declared twice"; return false; }
-      elements.push_back(e);
-    } else if (keyword == "property") {
-      if (elements.empty()) { error = where + "a property before any element"; return false; }
-      Property p;
-      words >> a;
-      if (a == "list") {
-        p.list = true;
-        if (!(words >> b >> c >> d) || !parse_type(b, p.count_type, p.count_signed) || p.count_type < 0 ||
-            !parse_type(c, p.type, p.is_signed)) {
-          error = where + "a list property needs an integer count type, a value type and a name";
-          return false;
-        }
-        p.name = d;
-      } else if (!parse_type(a, p.type, p.is_signed) || !(words >> p.name)) {
-        error = where + "a property needs a known type and a name";
-        return false;
-      }
-      elements.back().properties.push_back(p);
-    } else {
-      error = where + "unknown keyword '" + keyword + "'";
-      return false;
-    }
+    if (!read_header_line(line, number, file_size, format, has_format, elements, done, error)) return false;
   }
   if (!has_format) { error = "the PLY header has no format line"; return false; }
+  return true;
+}
 
-  // What the tool reads: vertex x, y, z and the face's vertex list; counts checked against the file.
+// What the tool reads: the vertex element's x, y, z and the face element's vertex list.
+struct Layout {
   const Element* vertex = nullptr;
   const Element* face = nullptr;
+  int axis_of[3] = {-1, -1, -1};  // property index of x, y, z in the vertex element
+  int list_of = -1;               // property index of the vertex list in the face element
+};
+
+// Finds the layout and checks the counts against the file.
+bool find_layout(const std::vector<Element>& elements, long long file_size, Layout& l, std::string& error) {
   long long all_items = 0;
   for (const Element& e : elements) {
-    if (e.name == "vertex") vertex = &e;
-    if (e.name == "face") face = &e;
+    if (e.name == "vertex") l.vertex = &e;
+    if (e.name == "face") l.face = &e;
     if (e.properties.empty() && e.count > 0) { error = "PLY element '" + e.name + "' has items but no properties"; return false; }
     all_items += e.count;
   }
-  if (!vertex) { error = "the PLY file has no vertex element"; return false; }
-  if (!counts_fit(vertex->count, face ? face->count : 0, file_size, error) || all_items > file_size) {
+  if (!l.vertex) { error = "the PLY file has no vertex element"; return false; }
+  if (!counts_fit(l.vertex->count, l.face ? l.face->count : 0, file_size, error) || all_items > file_size) {
     if (error.empty()) error = "the PLY header declares more items than the file can hold: the file is corrupt or cut short";
     return false;
   }
-  int axis_of[3] = {-1, -1, -1}, list_of = -1;
-  for (size_t k = 0; k < vertex->properties.size(); ++k)
+  for (size_t k = 0; k < l.vertex->properties.size(); ++k)
     for (int c = 0; c < 3; ++c)
-      if (vertex->properties[k].name == std::string(1, char('x' + c)) && !vertex->properties[k].list) axis_of[c] = int(k);
-  if (axis_of[0] < 0 || axis_of[1] < 0 || axis_of[2] < 0) { error = "the PLY vertex element has no x, y and z"; return false; }
-  if (face) {
-    for (size_t k = 0; k < face->properties.size(); ++k) {
-      const Property& p = face->properties[k];
-      if (p.list && p.type > 0 && (p.name == "vertex_indices" || (p.name == "vertex_index" && list_of < 0))) list_of = int(k);
+      if (l.vertex->properties[k].name == std::string(1, char('x' + c)) && !l.vertex->properties[k].list) l.axis_of[c] = int(k);
+  if (l.axis_of[0] < 0 || l.axis_of[1] < 0 || l.axis_of[2] < 0) { error = "the PLY vertex element has no x, y and z"; return false; }
+  if (l.face) {
+    for (size_t k = 0; k < l.face->properties.size(); ++k) {
+      const Property& p = l.face->properties[k];
+      if (p.list && p.type > 0 && (p.name == "vertex_indices" || (p.name == "vertex_index" && l.list_of < 0))) l.list_of = int(k);
     }
-    if (list_of < 0 && face->count > 0) { error = "the PLY face element has no integer list vertex_indices"; return false; }
+    if (l.list_of < 0 && l.face->count > 0) { error = "the PLY face element has no integer list vertex_indices"; return false; }
   }
+  return true;
+}
 
-  Body body(in, format);
-  std::vector<vcg::Point3d> points;
-  std::vector<int> corners, polygon;
-  points.reserve(size_t(vertex->count));
-  for (const Element& e : elements) {
+// One list property of one item: its values, kept in polygon when they are the face's vertices.
+bool read_list(Body& body, const Property& p, bool indices, long long vertex_count, const std::string& what,
+               std::vector<int>& polygon, std::string& error) {
+  double count = 0, v = 0;
+  if (!body.value(p.count_type, p.count_signed, count)) { error = what + "missing or malformed list count"; return false; }
+  if (count < 0) { error = what + "negative list count"; return false; }
+  if (indices && count < 3) { error = what + "a face needs at least three vertices"; return false; }
+  for (double j = 0; j < count; ++j) {  // bounded by the file: each value is read, none reserved
+    if (!body.value(p.type, p.is_signed, v)) { error = what + "the list is cut short"; return false; }
+    if (!indices) continue;
+    if (!(v >= 0 && v < double(vertex_count)) || v != std::floor(v)) {
+      error = what + "vertex index " + std::to_string(v) + " is out of range (0.." + std::to_string(vertex_count - 1) + ")";
+      return false;
+    }
+    polygon.push_back(int(v));
+  }
+  return true;
+}
+
+// The body, element by element: vertex positions and faces (polygons as fans of triangles).
+bool read_body(Body& body, const std::vector<Element>& elements, const Layout& l, std::vector<vcg::Point3d>& points,
+               std::vector<int>& corners, std::string& error) {
+  std::vector<int> polygon;
+  points.reserve(size_t(l.vertex->count));
+  for (const Element& e : elements)
     for (long long item = 0; item < e.count; ++item) {
       vcg::Point3d point(0, 0, 0);
       polygon.clear();
       for (size_t k = 0; k < e.properties.size(); ++k) {
         const Property& p = e.properties[k];
-        double v = 0;
         const std::string what = "PLY " + e.name + " " + std::to_string(item) + ", property " + p.name + ": ";
-        if (!p.list) {
-          if (!body.value(p.type, p.is_signed, v)) { error = what + "missing or malformed value: the file is cut short or corrupt"; return false; }
-          if (&e == vertex)
-            for (int c = 0; c < 3; ++c)
-              if (int(k) == axis_of[c]) point[c] = v;
+        if (p.list) {
+          if (!read_list(body, p, &e == l.face && int(k) == l.list_of, l.vertex->count, what, polygon, error)) return false;
           continue;
         }
-        double count = 0;
-        if (!body.value(p.count_type, p.count_signed, count)) { error = what + "missing or malformed list count"; return false; }
-        if (count < 0) { error = what + "negative list count"; return false; }
-        const bool indices = &e == face && int(k) == list_of;
-        if (indices && count < 3) { error = what + "a face needs at least three vertices"; return false; }
-        for (double j = 0; j < count; ++j) {  // bounded by the file: each value is read, none reserved
-          if (!body.value(p.type, p.is_signed, v)) { error = what + "the list is cut short"; return false; }
-          if (!indices) continue;
-          if (!(v >= 0 && v < double(vertex->count)) || v != std::floor(v)) {
-            error = what + "vertex index " + std::to_string(v) + " is out of range (0.." + std::to_string(vertex->count - 1) + ")";
-            return false;
-          }
-          polygon.push_back(int(v));
-        }
+        double v = 0;
+        if (!body.value(p.type, p.is_signed, v)) { error = what + "missing or malformed value: the file is cut short or corrupt"; return false; }
+        if (&e == l.vertex)
+          for (int c = 0; c < 3; ++c)
+            if (int(k) == l.axis_of[c]) point[c] = v;
       }
-      if (&e == vertex) points.push_back(point);
+      if (&e == l.vertex) points.push_back(point);
       for (size_t k = 1; k + 1 < polygon.size(); ++k) corners.insert(corners.end(), {polygon[0], polygon[k], polygon[k + 1]});
     }
-  }
+  return true;
+}
+
+}  // namespace
+
+bool read_ply(const std::string& path, long long file_size, ToolMesh& mesh, std::string& error) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) { error = "cannot open the file"; return false; }
+  Format format = Format::Ascii;
+  std::vector<Element> elements;
+  Layout layout;
+  if (!read_header(in, file_size, format, elements, error) || !find_layout(elements, file_size, layout, error)) return false;
+  Body body(in, format);
+  std::vector<vcg::Point3d> points;
+  std::vector<int> corners;
+  if (!read_body(body, elements, layout, points, corners, error)) return false;
   fill_tool_mesh(points, corners, mesh);
   return true;
 }

@@ -49,38 +49,19 @@ ArrayRows mesh_to_arrays(const MeshType& m, Eigen::MatrixXd& V, Eigen::MatrixXi&
 }
 
 // Writes the result into components the caller has made available: per-wedge texcoords
-// (texture index 0), per-vertex texcoords, per-vertex quality = vertex stretch and per-face
-// quality = face stretch.
+// (texture index 0) from the per-corner UV (a seam vertex has one per side), per-vertex
+// texcoords (one of the vertex's wedges, the only one for a disk; (0, 0) if no face uses it),
+// per-vertex quality = vertex stretch and per-face quality = face stretch.
 template <class MeshType>
-void write_parameterization(MeshType& m, const ArrayRows& rows, const Result& result) {
-  using TexScalar = typename MeshType::FaceType::TexCoordType::ScalarType;
-  for (size_t r = 0; r < rows.vertex_index.size(); ++r) {
-    auto& v = m.vert[size_t(rows.vertex_index[r])];
-    v.T().U() = TexScalar(result.uv(Eigen::Index(r), 0));
-    v.T().V() = TexScalar(result.uv(Eigen::Index(r), 1));
-    v.T().N() = 0;
-    v.Q() = typename MeshType::VertexType::QualityType(result.vertex_stretch(Eigen::Index(r)));
-  }
-  for (size_t r = 0; r < rows.face_index.size(); ++r) {
-    auto& f = m.face[size_t(rows.face_index[r])];
-    for (int k = 0; k < 3; ++k) {
-      f.WT(k).U() = f.V(k)->T().U();
-      f.WT(k).V() = f.V(k)->T().V();
-      f.WT(k).N() = 0;
-    }
-    f.Q() = typename MeshType::FaceType::QualityType(result.face_stretch(Eigen::Index(r)));
-  }
-}
-
-// The same for charts: per-wedge texcoords from the per-corner UV (a seam vertex has one per
-// side); a vertex's own texcoord is that of one of its wedges.
-template <class MeshType>
-void write_chart_parameterization(MeshType& m, const ArrayRows& rows, const ChartsResult& result) {
+void write_parameterization(MeshType& m, const ArrayRows& rows, const ChartsResult& result) {
   using TexScalar = typename MeshType::FaceType::TexCoordType::ScalarType;
   using VertexTexScalar = typename MeshType::VertexType::TexCoordType::ScalarType;
-  for (size_t r = 0; r < rows.vertex_index.size(); ++r)
-    m.vert[size_t(rows.vertex_index[r])].Q() =
-        typename MeshType::VertexType::QualityType(result.vertex_stretch(Eigen::Index(r)));
+  for (size_t r = 0; r < rows.vertex_index.size(); ++r) {
+    auto& v = m.vert[size_t(rows.vertex_index[r])];
+    v.Q() = typename MeshType::VertexType::QualityType(result.vertex_stretch(Eigen::Index(r)));
+    v.T().U() = v.T().V() = VertexTexScalar(0);
+    v.T().N() = 0;
+  }
   for (size_t r = 0; r < rows.face_index.size(); ++r) {
     auto& f = m.face[size_t(rows.face_index[r])];
     for (int k = 0; k < 3; ++k) {

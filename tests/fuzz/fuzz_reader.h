@@ -1,6 +1,6 @@
 // Shared body of the reader fuzz targets: the input bytes become a file with the target's
 // extension, which goes through the tool's path: read_mesh (picks the reader by extension),
-// mesh_to_arrays, parameterize (2 passes) and, when that succeeds, write_parameterization.
+// mesh_to_arrays, parameterize_charts (a disk, 2 passes) and, when that succeeds, write_parameterization.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -9,9 +9,11 @@
 #include <string>
 #include <unistd.h>
 
+#include "core/charts.h"
 #include "core/parameterize.h"
 #include "tool/mesh_io.h"
 #include "vcg/mesh_arrays.h"
+#include "vcg/pack_charts.h"
 
 namespace lowstretch_fuzz {
 
@@ -49,14 +51,15 @@ inline void read_and_parameterize(const char* extension, const uint8_t* data, si
   Eigen::MatrixXd V;
   Eigen::MatrixXi F;
   const lowstretch::ArrayRows rows = lowstretch::mesh_to_arrays(mesh, V, F);
-  lowstretch::Options options;
-  options.max_passes = 2;
-  const lowstretch::Result result = lowstretch::parameterize(V, F, options);
+  lowstretch::ChartOptions options;
+  options.disk.max_passes = 2;
+  const lowstretch::ChartsResult result = lowstretch::parameterize_charts(V, F, options, lowstretch::pack_charts_with_vcglib);
   if (result.error) {
     if (lowstretch::message(result.error).empty()) std::abort();
     return;
   }
-  if (result.uv.rows() != V.rows() || result.face_stretch.size() != F.rows() || result.passes.empty()) std::abort();
+  if (result.corner_uv.rows() != F.rows() || result.face_stretch.size() != F.rows() || result.disk_passes.empty())
+    std::abort();
   lowstretch::write_parameterization(mesh, rows, result);
 }
 

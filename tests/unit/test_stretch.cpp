@@ -6,11 +6,13 @@
 // after complex.h, which it needs
 #include <vcg/complex/algorithms/parametrization/distortion.h>
 
+#include "core/charts.h"
 #include "core/disk_mesh.h"
 #include "core/parameterize.h"
 #include "core/stretch.h"
 #include "generated_meshes.h"
 #include "vcg/mesh_arrays.h"
+#include "vcg/pack_charts.h"
 
 using namespace lowstretch;
 
@@ -89,10 +91,11 @@ class TM : public vcg::tri::TriMesh<std::vector<TV>, std::vector<TF>> {};
 
 TEST(Stretch, AgreesWithVcglibDistortionOnAParameterizedSurface) {
   const testmesh::Mesh m = testmesh::hemisphere(12, 24);
-  Options o;
-  o.max_passes = 3;
-  const Result r = parameterize(m.V, m.F, o);
+  ChartOptions o;
+  o.disk.max_passes = 3;
+  const ChartsResult r = parameterize_charts(m.V, m.F, o, pack_charts_with_vcglib);
   ASSERT_FALSE(r.error) << message(r.error);
+  ASSERT_TRUE(r.input_is_disk);
 
   TM tm;
   vcg::tri::Allocator<TM>::AddVertices(tm, size_t(m.V.rows()));
@@ -117,7 +120,7 @@ TEST(Stretch, AgreesWithVcglibDistortionOnAParameterizedSurface) {
     area += D::Area3D(&tm.face[f]);
     linf = std::max(linf, D::LInfStretchEnergy(&tm.face[f], area_scale));
   }
-  const PassMetrics& kept = r.passes[size_t(r.chosen_pass)];
+  const PassMetrics& kept = r.disk_passes[size_t(r.chosen_pass)];
   EXPECT_NEAR(std::sqrt(weighted / area), kept.l2_stretch, 1e-9);
   EXPECT_NEAR(linf, kept.linf_stretch, 1e-9 * linf);
   EXPECT_EQ(D::FoldedNum(tm), kept.flipped);
