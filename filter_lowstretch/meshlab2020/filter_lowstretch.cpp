@@ -41,16 +41,8 @@ bool FilterLowStretchPlugin::applyFilter(QAction*, MeshDocument& md, const RichP
   if (md.mm() == nullptr) return fail("no mesh is loaded");
   MeshModel& m = *md.mm();
 
-  lowstretch::ChartOptions options;
-  if (const lowstretch::Error invalid = plugin::options_from(parameters, options))
-    return fail(lowstretch::message(invalid, plugin::label_of));
-  options.disk.progress = plugin::progress(cb);
-
-  const plugin::Run run = plugin::run(m.cm, options, [this](const std::string& line) { Log(line); });
+  const plugin::Run run = plugin::apply(m, parameters, cb, [this](const std::string& line) { Log(line); });
   if (!run.error.empty()) return fail(run.error);
-
-  m.updateDataMask(plugin::written_data_mask<MeshModel>());
-  plugin::write_result(m.cm, run);
   const QString texture = plugin::checkerboard_path();
   m.cm.textures.clear();  // every wedge now refers to texture 0
   if (texture.isEmpty())

@@ -51,17 +51,9 @@ std::map<std::string, QVariant> FilterLowStretchPlugin::applyFilter(const QActio
   if (md.mm() == nullptr) fail("no mesh is loaded");
   MeshModel& m = *md.mm();
 
-  lowstretch::ChartOptions options;
-  if (const lowstretch::Error invalid = plugin::options_from(parameters, options))
-    fail(lowstretch::message(invalid, plugin::label_of));
-  options.disk.progress = plugin::progress(cb);
-
-  const plugin::Run run = plugin::run(m.cm, options, [this](const std::string& line) { log(line); });
+  const plugin::Run run = plugin::apply(m, parameters, cb, [this](const std::string& line) { log(line); });
   if (!run.error.empty()) fail(run.error);
-
   const int written = plugin::written_data_mask<MeshModel>();
-  m.updateDataMask(written);
-  plugin::write_result(m.cm, run);
   // Every wedge now refers to texture 0. MeshLab 2022+ keeps the image with the mesh and saves it
   // next to the mesh file under the texture's name.
   m.clearTextures();

@@ -147,6 +147,7 @@ void write_result(MeshType& m, const Run& run) {
   write_parameterization(m, run.rows, run.result);
 }
 
+
 // The checkerboard texture: "filter_lowstretch/checkerboard.png" next to the plugin file (it is
 // installed there, and copied there in the build tree). The plugin may be loaded through a
 // symlink, so both the path it was loaded from and its real path are tried. Empty if not found.
@@ -158,6 +159,25 @@ template <class MeshModelType>
 int written_data_mask() {
   return MeshModelType::MM_WEDGTEXCOORD | MeshModelType::MM_VERTTEXCOORD | MeshModelType::MM_VERTQUALITY |
          MeshModelType::MM_FACEQUALITY;
+}
+
+// The filter as both adapters apply it to a MeshModel: options from the dialog's values, the
+// run with progress and log, and on success the texcoords and quality enabled and written.
+// On failure `error` holds the message and the mesh is untouched.
+template <class MeshModelType, class List, class CallBack>
+Run apply(MeshModelType& m, const List& values, CallBack* cb, const std::function<void(const std::string&)>& log) {
+  ChartOptions options;
+  if (const Error invalid = options_from(values, options)) {
+    Run failed;
+    failed.error = message(invalid, label_of);
+    return failed;
+  }
+  options.disk.progress = progress(cb);
+  Run result = run(m.cm, options, log);
+  if (!result.error.empty()) return result;
+  m.updateDataMask(written_data_mask<MeshModelType>());
+  write_result(m.cm, result);
+  return result;
 }
 
 }  // namespace plugin
