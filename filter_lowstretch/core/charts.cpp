@@ -169,18 +169,35 @@ std::vector<LayoutPass> layout_passes(const std::vector<std::vector<ChartPass>>&
   return layout;
 }
 
+Error check_texture_options(const ChartOptions& o) {
+  if (o.texture_size < 8 || o.texture_size > 65536)
+    return {ErrorCode::InvalidOption, 0, "must be from 8 to 65536, got " + std::to_string(o.texture_size), "texture_size"};
+  if (!(o.gutter >= 0.5 && o.gutter <= o.texture_size / 8.0))
+    return {ErrorCode::InvalidOption, 0, "must be from 0.5 to an eighth of the texture size (" +
+                                             number_text(o.texture_size / 8.0) + "), got " + number_text(o.gutter),
+            "gutter"};
+  return {};
+}
+
+// Moves a layout of [0,1]^2 uniformly into [g, 1 - g]^2, g = gutter / texture_size.
+void keep_inside_gutter(const ChartOptions& o, Eigen::MatrixXd& corner_uv) {
+  const double g = o.gutter / o.texture_size;
+  corner_uv = (corner_uv.array() * (1 - 2 * g) + g).matrix();
+}
+
 ChartsResult failed(Error error) {
   ChartsResult result;
   result.error = std::move(error);
   return result;
 }
 
-ChartsResult from_disk(const Eigen::MatrixXi& F, Result disk) {
+ChartsResult from_disk(const Eigen::MatrixXi& F, Result disk, const ChartOptions& options) {
   ChartsResult result;
   result.input_is_disk = true;
   result.corner_uv.resize(F.rows(), 6);
   for (Eigen::Index f = 0; f < F.rows(); ++f)
     for (int k = 0; k < 3; ++k) result.corner_uv.block(f, 2 * k, 1, 2) = disk.uv.row(F(f, k));
+  keep_inside_gutter(options, result.corner_uv);
   result.face_chart.assign(size_t(F.rows()), 0);
   result.face_stretch = std::move(disk.face_stretch);
   result.vertex_stretch = std::move(disk.vertex_stretch);
@@ -192,8 +209,10 @@ ChartsResult from_disk(const Eigen::MatrixXi& F, Result disk) {
   chart.chosen_pass = disk.chosen_pass;
   chart.passes = int(disk.passes.size());
   result.charts.push_back(chart);
-  for (Eigen::Index f = 0; f < F.rows(); ++f)
-    result.coverage += std::abs(uv_area(disk.uv.row(F(f, 0)), disk.uv.row(F(f, 1)), disk.uv.row(F(f, 2))));
+  for (Eigen::Index f = 0; f < F.rows(); ++f) {
+    const auto corner = [&](int k) { return Eigen::RowVector2d(result.corner_uv.block(f, 2 * k, 1, 2)); };
+    result.coverage += std::abs(uv_area(corner(0), corner(1), corner(2)));
+  }
   result.seconds_total = disk.seconds_total;
   result.notes = std::move(disk.notes);
   result.disk_passes = std::move(disk.passes);
@@ -240,9 +259,9 @@ Error solve_charts(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, doub
 }
 
 // Packs the charts' boxes, places every corner, then moves and scales the whole layout uniformly
-// into [0,1]^2; fills result.corner_uv and face_chart.
+// into [0,1]^2, then inside the gutter; fills result.corner_uv and face_chart.
 Error lay_out(std::vector<SolvedChart>& solved, const std::vector<std::vector<int>>& faces_of, Eigen::Index face_count,
-              const ChartPacker& pack, ChartsResult& result) {
+              const ChartPacker& pack, const ChartOptions& options, ChartsResult& result) {
   std::vector<Eigen::AlignedBox2d> boxes;
   for (const SolvedChart& s : solved) boxes.push_back(s.box);
   std::vector<ChartPlacement> placements;
@@ -266,6 +285,7 @@ Error lay_out(std::vector<SolvedChart>& solved, const std::vector<std::vector<in
         result.corner_uv.block(f, 2 * k, 1, 2) = p.cwiseMax(0.0).cwiseMin(1.0).transpose();
       }
     }
+  keep_inside_gutter(options, result.corner_uv);
   return {};
 }
 
@@ -311,8 +331,9 @@ void measure_layout(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, int
 ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options,
                                  const ChartPacker& pack) {
   const Clock::time_point start = Clock::now();
+  if (Error e = check_texture_options(options)) return failed(e);
   Result whole = parameterize(V, F, options.disk);
-  if (!whole.error) return from_disk(F, std::move(whole));
+  if (!whole.error) return from_disk(F, std::move(whole), options);
   if (options.non_disk == NonDisk::Reject || !charts_can_fix(whole.error.code)) return failed(whole.error);
   if (!pack) return failed({ErrorCode::InvalidOption, 0, "charts need a packer"});
 
@@ -330,7 +351,7 @@ ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi
   ChartsResult result;
   std::vector<SolvedChart> solved;
   if (Error e = solve_charts(unit_V, F, unit, faces_of, options.disk, solved, result)) return failed(e);
-  if (Error e = lay_out(solved, faces_of, F.rows(), pack, result)) return failed(e);
+  if (Error e = lay_out(solved, faces_of, F.rows(), pack, options, result)) return failed(e);
   measure_layout(unit_V, F, int(V.rows()), faces_of, result);
   result.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
   result.layout.seconds = result.seconds_total;

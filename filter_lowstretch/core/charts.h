@@ -17,6 +17,11 @@ enum class NonDisk { Reject, Charts };
 struct ChartOptions {
   Options disk;                        // the method, for the whole disk or for each chart
   NonDisk non_disk = NonDisk::Reject;  // Reject: a non-disk mesh is an error, as parameterize
+  // The texture the map is made for: every UV stays `gutter` texels or more away from the border
+  // of [0,1]^2, so that baking, mipmaps and rasterizers never address a texel outside the image
+  // (UV exactly 0 or 1 would give texel -1 or `texture_size`).
+  int texture_size = 1024;             // texels per side, 8 to 65536
+  double gutter = 2;                   // in texels, from 0.5 to an eighth of texture_size
 };
 
 // Where the packer puts one chart: uv -> scale * uv + offset. The packer must give every chart
@@ -46,7 +51,7 @@ struct LayoutPass {
 
 struct ChartsResult {
   Error error;  // error.code != None: nothing below is filled
-  // #F x 6: (u, v) of corners 0, 1, 2 of every face, in [0,1]^2.
+  // #F x 6: (u, v) of corners 0, 1, 2 of every face, in [g, 1 - g]^2, g = gutter / texture_size.
   Eigen::MatrixXd corner_uv;
   std::vector<int> face_chart;            // chart of each face
   Eigen::VectorXd face_stretch;           // normalized over the whole layout, inf if flipped
@@ -55,7 +60,7 @@ struct ChartsResult {
   PassMetrics layout;                     // the paper's metrics of the final layout, whole mesh
   std::vector<LayoutPass> passes;         // L2 stretch and flips of every pass, whole mesh
   double seam_length = 0;                 // sum over the charts
-  double coverage = 0;                    // fraction of the unit square covered by the charts
+  double coverage = 0;                    // fraction of [0,1]^2 covered by the UV triangles
   double seconds_total = 0;
   // A disk input is one chart: parameterize's map of the whole mesh, in the fields above. How
   // its passes went (empty for charts, whose passes are per chart and summed up in `passes`):

@@ -1,5 +1,7 @@
 #include "error.h"
 
+#include <sstream>
+
 namespace lowstretch {
 
 namespace {
@@ -60,6 +62,12 @@ std::string message(const Error& e) {
 std::string message(const Error& e, const std::function<std::string(const std::string&)>& name_of) {
   if (e.code != ErrorCode::InvalidOption || e.option.empty()) return message(e);
   return name_of(e.option) + " " + e.detail;
+}
+
+std::string number_text(double value) {
+  std::ostringstream s;
+  s << value;
+  return s.str();
 }
 
 bool charts_would_help(ErrorCode code) {

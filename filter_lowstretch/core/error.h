@@ -44,6 +44,8 @@ std::string message(const Error& error, const std::function<std::string(const st
 // Whether parameterizing the mesh as charts (charts.h) gets past this error: the caller then adds
 // how its user asks for charts.
 bool charts_would_help(ErrorCode code);
+// A number as a person writes it in a message: 2, 0.5, 1e+30.
+std::string number_text(double value);
 // A stable short name for scripts and JSON ("several_boundary_loops").
 const char* code_name(ErrorCode code);
 

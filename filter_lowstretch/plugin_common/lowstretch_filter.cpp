@@ -22,8 +22,8 @@ const char* const kFilterInfo =
     "(natural) boundary, the interior starts from Floater's shape-preserving map, and each "
     "pass divides the weights by the vertex stretch and solves again, keeping the pass of "
     "lowest L2 stretch.<br>"
-    "Writes per-wedge and per-vertex texture coordinates in [0,1]<sup>2</sup> (texture 0, a "
-    "checkerboard), per-vertex quality = vertex stretch and per-face quality = triangle "
+    "Writes per-wedge and per-vertex texture coordinates inside [0,1]<sup>2</sup>, a gutter of "
+    "texels away from its border (texture 0, a checkerboard), per-vertex quality = vertex stretch and per-face quality = triangle "
     "stretch (use <i>Colorize by vertex/face quality</i> to see where the map stretches). "
     "The log lists the stretch and distortion of every pass (for charts, of every chart and of the "
     "whole layout, with the seam length and the fraction of the square covered). A mesh that "
@@ -40,7 +40,8 @@ const InitialWeights kWeightsValues[] = {InitialWeights::Floater, InitialWeights
 const NonDisk kNonDiskValues[] = {NonDisk::Reject, NonDisk::Charts};
 
 Parameters make_parameters() {
-  const Options defaults;
+  const ChartOptions chart_defaults;
+  const Options& defaults = chart_defaults.disk;
   return Parameters{
       EnumParameter{"boundaryShape", 0, {"Square", "Circle", "Natural"}, "Boundary shape",
                     "Where the boundary loop goes: the unit square (the paper's choice), the "
@@ -64,6 +65,13 @@ Parameters make_parameters() {
                     "disk chart (holes closed virtually, closed or higher-genus parts cut along "
                     "short seams), parameterized the same way and packed into the unit square. "
                     "Non-manifold or inconsistently oriented meshes are rejected either way."},
+      IntParameter{"textureSize", chart_defaults.texture_size, "Texture size",
+                   "Side in texels of the texture the map is made for (the size you give "
+                   "Transfer: Vertex Color to Texture): the gutter is measured in its texels."},
+      FloatParameter{"gutter", chart_defaults.gutter, "Gutter (texels)",
+                     "Every texture coordinate stays this many texels inside the border of the "
+                     "texture, so that baking and mipmaps never address a texel outside it "
+                     "(at least 0.5)."},
   };
 }
 
@@ -97,19 +105,21 @@ QStringList entries(const EnumParameter& p) {
   return list;
 }
 
-Error make_options(int boundary, int weights, double exponent, int max_passes, int non_disk, ChartOptions& charts) {
+Error make_options(const ParameterValues& v, ChartOptions& charts) {
   const Parameters& p = parameters();
-  if (boundary < 0 || boundary >= int(p.boundary.entries.size())) return invalid_enum(p.boundary, boundary);
-  if (weights < 0 || weights >= int(p.weights.entries.size())) return invalid_enum(p.weights, weights);
-  if (non_disk < 0 || non_disk >= int(p.non_disk.entries.size())) return invalid_enum(p.non_disk, non_disk);
-  // The values themselves are checked by the core (Options), which names them; label_of turns
-  // its names into the dialog's labels.
+  if (v.boundary < 0 || v.boundary >= int(p.boundary.entries.size())) return invalid_enum(p.boundary, v.boundary);
+  if (v.weights < 0 || v.weights >= int(p.weights.entries.size())) return invalid_enum(p.weights, v.weights);
+  if (v.non_disk < 0 || v.non_disk >= int(p.non_disk.entries.size())) return invalid_enum(p.non_disk, v.non_disk);
+  // The values themselves are checked by the core (Options, ChartOptions), which names them;
+  // label_of turns its names into the dialog's labels.
   Options& options = charts.disk;
-  options.boundary = kBoundaryValues[boundary];
-  options.weights = kWeightsValues[weights];
-  options.exponent = exponent;
-  options.max_passes = max_passes;
-  charts.non_disk = kNonDiskValues[non_disk];
+  options.boundary = kBoundaryValues[v.boundary];
+  options.weights = kWeightsValues[v.weights];
+  options.exponent = v.exponent;
+  options.max_passes = v.max_passes;
+  charts.non_disk = kNonDiskValues[v.non_disk];
+  charts.texture_size = v.texture_size;
+  charts.gutter = v.gutter;
   return {};
 }
 
@@ -117,14 +127,17 @@ std::string label_of(const std::string& option) {
   const Parameters& p = parameters();
   if (option == "exponent") return p.exponent.label;
   if (option == "max_passes") return p.max_passes.label;
+  if (option == "texture_size") return p.texture_size.label;
+  if (option == "gutter") return p.gutter.label;
   return option;
 }
 
 std::string header_line(int vertices, int faces, const ChartOptions& charts) {
   const Options& options = charts.disk;
-  return format("%s: %d vertices, %d faces; boundary %s, initial weights %s, exponent %g, max passes %d, non-disk input %s",
+  return format("%s: %d vertices, %d faces; boundary %s, initial weights %s, exponent %g, max passes %d, non-disk input %s, "
+                "texture %d, gutter %g texels",
                 kFilterName, vertices, faces, to_string(options.boundary), to_string(options.weights), options.exponent,
-                options.max_passes, to_string(charts.non_disk));
+                options.max_passes, to_string(charts.non_disk), charts.texture_size, charts.gutter);
 }
 
 std::string failure_line(const std::string& message) { return std::string(kFilterName) + " failed: " + message; }

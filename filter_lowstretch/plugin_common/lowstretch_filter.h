@@ -48,13 +48,15 @@ struct IntParameter {
   const char* label;
   const char* tooltip;
 };
-// The filter's five parameters, in the order the dialog lists them.
+// The filter's parameters, in the order the dialog lists them.
 struct Parameters {
   EnumParameter boundary;
   FloatParameter exponent;
   IntParameter max_passes;
   EnumParameter weights;
   EnumParameter non_disk;
+  IntParameter texture_size;
+  FloatParameter gutter;
 };
 const Parameters& parameters();
 // An enum parameter's entries as MeshLab's RichEnum takes them.
@@ -63,7 +65,13 @@ QStringList entries(const EnumParameter& p);
 // The core's options from the parameter values as MeshLab hands them over. On an invalid value
 // returns an InvalidOption error whose detail names the parameter by its label; options is then
 // left as it was.
-Error make_options(int boundary, int weights, double exponent, int max_passes, int non_disk, ChartOptions& options);
+struct ParameterValues {
+  int boundary, weights;
+  double exponent;
+  int max_passes, non_disk, texture_size;
+  double gutter;
+};
+Error make_options(const ParameterValues& values, ChartOptions& options);
 // The dialog's label of an option the core names in an InvalidOption error ("exponent").
 std::string label_of(const std::string& option);
 
@@ -77,6 +85,8 @@ void add_parameters(List& list) {
   list.addParam(Int(p.max_passes.name, p.max_passes.default_value, p.max_passes.label, p.max_passes.tooltip));
   list.addParam(Enum(p.weights.name, p.weights.default_index, entries(p.weights), p.weights.label, p.weights.tooltip));
   list.addParam(Enum(p.non_disk.name, p.non_disk.default_index, entries(p.non_disk), p.non_disk.label, p.non_disk.tooltip));
+  list.addParam(Int(p.texture_size.name, p.texture_size.default_value, p.texture_size.label, p.texture_size.tooltip));
+  list.addParam(Float(p.gutter.name, Scalar(p.gutter.default_value), p.gutter.label, p.gutter.tooltip));
 }
 
 // make_options from the values a MeshLab RichParameterList holds (getEnum, getFloat, getInt in
@@ -84,8 +94,10 @@ void add_parameters(List& list) {
 template <class List>
 Error options_from(const List& values, ChartOptions& options) {
   const Parameters& p = parameters();
-  return make_options(values.getEnum(p.boundary.name), values.getEnum(p.weights.name), values.getFloat(p.exponent.name),
-                      values.getInt(p.max_passes.name), values.getEnum(p.non_disk.name), options);
+  return make_options({values.getEnum(p.boundary.name), values.getEnum(p.weights.name), values.getFloat(p.exponent.name),
+                       values.getInt(p.max_passes.name), values.getEnum(p.non_disk.name), values.getInt(p.texture_size.name),
+                       values.getFloat(p.gutter.name)},
+                      options);
 }
 
 // Maps MeshLab's progress callback (percent, stage; false cancels) to the core's.

@@ -25,8 +25,10 @@ const char* kUsage =
     "usage: lowstretch INPUT [-o OUTPUT.obj|.ply] [--boundary square|circle|natural]\n"
     "                  [--weights floater|meanvalue|harmonic] [--exponent E] [--max-passes N]\n"
     "                  [--all-passes] [--solver amg|direct] [--non-disk reject|charts] [--json]\n"
-    "                  [--svg UV.svg]\n"
+    "                  [--texture-size N] [--gutter G] [--svg UV.svg]\n"
     "Reads OFF, OBJ or PLY; writes per-corner texture coordinates and stretch as quality.\n"
+    "Every texture coordinate stays G texels (default 2) inside the border of an N x N texture\n"
+    "(default 1024), so that baking a texture of that size never addresses a texel outside it.\n"
     "--non-disk charts parameterizes a mesh that is not a disk (holes, closed, handles, several\n"
     "parts) as disk charts packed into the unit square; reject (the default) refuses it.\n"
     "--all-passes runs max-passes passes even when the stretch stops falling (benchmarks).\n"
@@ -48,6 +50,13 @@ bool parse_number(const char* text, double& value) {
   return end != text && *end == '\0' && std::isfinite(value);
 }
 
+bool parse_whole_number(const char* text, int& value) {
+  double number = 0;
+  if (!parse_number(text, number) || number != std::floor(number) || std::abs(number) > 1e9) return false;
+  value = int(number);
+  return true;
+}
+
 // Returns an empty string or the reason the arguments are wrong.
 std::string parse(int argc, char** argv, Arguments& a) {
   for (int i = 1; i < argc; ++i) {
@@ -58,7 +67,8 @@ std::string parse(int argc, char** argv, Arguments& a) {
     else if (arg == "--all-passes") a.charts.disk.stop_when_stretch_rises = false;
     else if (arg == "-h" || arg == "--help") return "help";
     else if ((arg == "-o" || arg == "--svg" || arg == "--boundary" || arg == "--weights" || arg == "--exponent" ||
-              arg == "--max-passes" || arg == "--non-disk" || arg == "--solver") && !has_value) return arg + " needs a value";
+              arg == "--max-passes" || arg == "--non-disk" || arg == "--solver" || arg == "--texture-size" ||
+              arg == "--gutter") && !has_value) return arg + " needs a value";
     else if (arg == "-o") a.output = value();
     else if (arg == "--svg") a.svg = value();
     else if (arg == "--non-disk") {
@@ -87,11 +97,12 @@ std::string parse(int argc, char** argv, Arguments& a) {
       else return "--weights takes floater, meanvalue or harmonic, not '" + v + "'";
     } else if (arg == "--exponent") {
       if (!parse_number(argv[++i], a.charts.disk.exponent)) return "--exponent takes a number";
-    } else if (arg == "--max-passes") {  // the core checks the range (flag_of names it)
-      double passes = 0;
-      if (!parse_number(argv[++i], passes) || passes != std::floor(passes) || std::abs(passes) > 1e9)
-        return "--max-passes takes a whole number";
-      a.charts.disk.max_passes = int(passes);
+    } else if (arg == "--max-passes") {  // the core checks the ranges (flag_of names them)
+      if (!parse_whole_number(argv[++i], a.charts.disk.max_passes)) return "--max-passes takes a whole number";
+    } else if (arg == "--texture-size") {
+      if (!parse_whole_number(argv[++i], a.charts.texture_size)) return "--texture-size takes a whole number";
+    } else if (arg == "--gutter") {
+      if (!parse_number(argv[++i], a.charts.gutter)) return "--gutter takes a number";
     } else if (!arg.empty() && arg[0] == '-') return "unknown option " + arg;
     else if (a.input.empty()) a.input = arg;
     else return "more than one input file: " + arg;
@@ -104,6 +115,8 @@ std::string parse(int argc, char** argv, Arguments& a) {
 std::string flag_of(const std::string& option) {
   if (option == "exponent") return "--exponent";
   if (option == "max_passes") return "--max-passes";
+  if (option == "texture_size") return "--texture-size";
+  if (option == "gutter") return "--gutter";
   return option;
 }
 

@@ -69,6 +69,7 @@ EXPECTED = {
     "three_holes": "3 boundary loops",
     "point_cloud": "no faces",
 }
+GUTTER = 2 / 1024  # the default gutter (texels) over the default texture size: where UV stays
 TOOL_WEIGHTS = "floater"  # the .mlx scripts use the default initial weights
 
 
@@ -312,8 +313,8 @@ def check_result(check, args, input_name, boundary, proc, out_ply):
         return None
     uv = wedge_uv(check, ply)
     values = [x for tc in face_el.data["texcoord"] for x in tc]
-    check(all(math.isfinite(x) and -1e-6 <= x <= 1 + 1e-6 for x in values),
-          f"texcoords are in [0,1]: range [{min(values):.6g}, {max(values):.6g}]")
+    check(all(math.isfinite(x) and GUTTER - 1e-6 <= x <= 1 - GUTTER + 1e-6 for x in values),
+          f"texcoords are 2 texels of 1024 inside [0,1]: range [{min(values):.6g}, {max(values):.6g}]")
     if vert_el.has("texture_u"):
         per_vertex = list(zip(vert_el.data["texture_u"], vert_el.data["texture_v"]))
         check(all(uv[i] is None or uv[i] == per_vertex[i] for i in range(len(uv))),
@@ -478,7 +479,8 @@ def cmd_charts(args):
     texcoords = ply.elements["face"].data.get("texcoord")
     if not check(texcoords is not None and len(texcoords) == len(ply.faces()), "every face has wedge texcoords"):
         return check
-    check(all(len(tc) == 6 and all(0.0 <= t <= 1.0 for t in tc) for tc in texcoords), "all wedge texcoords are in [0,1]^2")
+    check(all(len(tc) == 6 and all(GUTTER - 1e-6 <= t <= 1 - GUTTER + 1e-6 for t in tc) for tc in texcoords),
+          "all wedge texcoords are 2 texels of 1024 inside [0,1]^2")
     triangles = [((tc[0], tc[1]), (tc[2], tc[3]), (tc[4], tc[5])) for tc in texcoords]
     bad = sum(1 for t in triangles if not signed_area(*t) > 0)
     check(bad == 0, f"no flipped or zero-area triangle in any chart ({bad})")

@@ -5,7 +5,7 @@ then this script runs itself again with that environment's Python (--inside) and
     (this is why there is a pymeshlab build of the plugin);
   - pymeshlab.load_plugin(<pymeshlab build>) adds compute_texcoord_parametrization_low_stretch;
   - on a real disk, apply_filter returns the dict of output values (kept pass, L2/Linf stretch,
-    distortions, flips, time), the mesh gets per-wedge texcoords in [0,1]^2 with no flipped
+    distortions, flips, time), the mesh gets per-wedge texcoords 2 texels inside [0,1]^2 with no flipped
     triangle, the L2 stretch recomputed from those texcoords and the positions equals the returned
     one, per-face quality equals the recomputed face stretch, and the Circle boundary works too;
   - on a mesh that is not a disk it raises PyMeshLabException with the core's message, and the mesh
@@ -28,6 +28,7 @@ from stretch_formula import map_stretch  # noqa: E402
 
 PYMESHLAB = "pymeshlab==2025.7.post1"
 NAME = "compute_texcoord_parametrization_low_stretch"
+GUTTER = 2 / 1024  # the default gutter (texels) over the default texture size: where UV stays
 KEYS = {"l2_stretch": float, "linf_stretch": float, "edge_distortion": float, "angle_distortion": float,
         "area_distortion": float, "flipped": int, "degenerate": int, "kept_pass": int, "passes": int,
         "initial_l2_stretch": float, "seconds": float, "charts": int, "seam_length": float, "coverage": float}
@@ -93,7 +94,7 @@ def inside(args):
     V, F = m.vertex_matrix(), m.face_matrix()
     if check(m.has_wedge_tex_coord(), "the mesh has per-wedge texcoords"):
         wtc = m.wedge_tex_coord_matrix()
-        check(wtc.shape == (3 * len(F), 2) and wtc.min() >= 0 and wtc.max() <= 1,
+        check(wtc.shape == (3 * len(F), 2) and wtc.min() >= GUTTER - 1e-6 and wtc.max() <= 1 - GUTTER + 1e-6,
               f"wedge texcoords: shape {wtc.shape} (3 x {len(F)} faces), range [{wtc.min():.6g}, {wtc.max():.6g}]")
         area_u, face_sigma, l2, area = stretch(np, V, F, wtc.astype(np.float64))
         check(int((area_u <= 0).sum()) == 0, f"no flipped or zero-area triangle in the texcoords "
@@ -143,9 +144,9 @@ def inside(args):
     if check(m.has_wedge_tex_coord(), "it now has per-wedge texcoords"):
         wtc = m.wedge_tex_coord_matrix().astype(np.float64)
         area_u = stretch(np, m.vertex_matrix(), m.face_matrix(), wtc)[0]
-        check(wtc.shape == (3 * len(m.face_matrix()), 2) and wtc.min() >= 0 and wtc.max() <= 1
-              and int((area_u <= 0).sum()) == 0,
-              f"wedge texcoords in [0,1]^2, no flipped or zero-area triangle ({int((area_u <= 0).sum())})")
+        check(wtc.shape == (3 * len(m.face_matrix()), 2) and wtc.min() >= GUTTER - 1e-6
+              and wtc.max() <= 1 - GUTTER + 1e-6 and int((area_u <= 0).sum()) == 0,
+              f"wedge texcoords 2 texels of 1024 inside [0,1]^2, no flipped or zero-area triangle ({int((area_u <= 0).sum())})")
     return check
 
 
@@ -153,8 +154,7 @@ def run_readme(check, args, python):
     with open(args.readme) as f:
         blocks = re.findall(r"```python\n(.*?)```", f.read(), re.S)
     snippet = [b for b in blocks if "pymeshlab.load_plugin" in b]
-    if not snippet:
-        print(f"info:   {args.readme} has no ```python block calling pymeshlab.load_plugin: not run")
+    if not check(bool(snippet), f"{args.readme} has a ```python block calling pymeshlab.load_plugin"):
         return
     folder = os.path.join(args.work, "readme")
     os.makedirs(folder, exist_ok=True)

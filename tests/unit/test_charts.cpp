@@ -1,5 +1,5 @@
 // Non-disk meshes as charts (core/charts.h packed by vcg/pack_charts.h): every face gets texture
-// coordinates in [0,1]^2, no chart has a flipped or zero-area triangle, no two triangles overlap,
+// coordinates inside [0,1]^2 by the gutter, no chart has a flipped or zero-area triangle, no two triangles overlap,
 // and a disk gives exactly what parameterize gives.
 #include <gtest/gtest.h>
 
@@ -66,8 +66,9 @@ void expect_valid_layout(const Eigen::MatrixXi& F, const ChartsResult& r) {
   ASSERT_EQ(r.corner_uv.rows(), F.rows());
   ASSERT_EQ(r.corner_uv.cols(), 6);
   ASSERT_TRUE(r.corner_uv.allFinite());
-  EXPECT_GE(r.corner_uv.minCoeff(), 0.0);
-  EXPECT_LE(r.corner_uv.maxCoeff(), 1.0);
+  const double gutter = ChartOptions().gutter / ChartOptions().texture_size;  // 2 texels of 1024
+  EXPECT_GE(r.corner_uv.minCoeff(), gutter - 1e-15);
+  EXPECT_LE(r.corner_uv.maxCoeff(), 1 - gutter + 1e-15);
   int not_positive = 0;
   for (Eigen::Index f = 0; f < F.rows(); ++f) not_positive += !(signed_area(corner(r, f, 0), corner(r, f, 1), corner(r, f, 2)) > 0);
   EXPECT_EQ(not_positive, 0);
@@ -152,9 +153,46 @@ TEST(Charts, DiskGivesParameterizesResult) {
   EXPECT_TRUE(r.input_is_disk);
   ASSERT_EQ(r.charts.size(), 1u);
   EXPECT_EQ(r.seam_length, 0.0);
+  // The same map, moved inside the gutter: 2 texels of a 1024 texture on every side.
+  const double g = 2.0 / 1024;
+  double largest_difference = 0;
   for (Eigen::Index f = 0; f < m.F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) EXPECT_EQ(corner(r, f, k), disk.uv.row(m.F(f, k)).transpose());
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector2d expected = disk.uv.row(m.F(f, k)).transpose() * (1 - 2 * g) + Eigen::Vector2d::Constant(g);
+      largest_difference = std::max(largest_difference, (corner(r, f, k) - expected).cwiseAbs().maxCoeff());
+    }
+  EXPECT_LT(largest_difference, 1e-15);
+  // The square boundary reaches the gutter on every side, and no further.
+  EXPECT_NEAR(r.corner_uv.minCoeff(), g, 1e-15);
+  EXPECT_NEAR(r.corner_uv.maxCoeff(), 1 - g, 1e-15);
+  EXPECT_NEAR(r.coverage, (1 - 2 * g) * (1 - 2 * g), 1e-9);
   EXPECT_EQ(r.layout.l2_stretch, disk.passes[size_t(disk.chosen_pass)].l2_stretch);
+}
+
+TEST(Charts, GutterIsCountedInTexelsOfTheStatedTexture) {
+  const testmesh::Mesh m = testmesh::grid(8);
+  ChartOptions options;
+  options.texture_size = 64;
+  options.gutter = 0.5;  // the least: half a texel of a 64-texel texture
+  const ChartsResult r = parameterize_charts(m.V, m.F, options, pack_charts_with_vcglib);
+  ASSERT_FALSE(r.error) << message(r.error);
+  EXPECT_NEAR(r.corner_uv.minCoeff() * 64, 0.5, 1e-12);
+  EXPECT_NEAR(r.corner_uv.maxCoeff() * 64, 63.5, 1e-12);
+}
+
+TEST(Charts, TextureSizeAndGutterOutOfRangeAreRefusedByName) {
+  const testmesh::Mesh m = testmesh::grid(6);
+  struct Case { int size; double gutter; const char* option; };
+  for (const Case c : {Case{4, 2, "texture_size"}, Case{70000, 2, "texture_size"}, Case{1024, 0.25, "gutter"},
+                       Case{1024, 129, "gutter"}, Case{1024, NAN, "gutter"}}) {
+    ChartOptions options;
+    options.texture_size = c.size;
+    options.gutter = c.gutter;
+    const ChartsResult r = parameterize_charts(m.V, m.F, options, pack_charts_with_vcglib);
+    EXPECT_EQ(r.error.code, ErrorCode::InvalidOption) << c.size << " " << c.gutter;
+    EXPECT_EQ(r.error.option, c.option);
+    EXPECT_EQ(r.corner_uv.size(), 0);
+  }
 }
 
 TEST(Charts, RejectIsTheDefaultAndItsMessageNamesTheOption) {
