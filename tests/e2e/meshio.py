@@ -143,6 +143,32 @@ def read_obj(path):
     return vertices, faces
 
 
+def read_off(path):
+    """Vertices and faces of an OFF file (comments and the optional colour columns ignored)."""
+    with open(path) as f:
+        words = [w for line in f for w in line.split("#")[0].split()]
+    if not words or not words[0].endswith("OFF"):
+        raise ValueError(f"{path}: not an OFF file")
+    nv, nf = int(words[1]), int(words[2])
+    at = 4
+    vertices = []
+    for _ in range(nv):
+        vertices.append(tuple(float(w) for w in words[at:at + 3]))
+        at += 3
+    faces = []
+    for _ in range(nf):
+        n = int(words[at])
+        faces.append([int(w) for w in words[at + 1:at + 1 + n]])
+        at += 1 + n
+        while at < len(words) and not _is_int(words[at]):  # a face colour given as floats
+            at += 1
+    return vertices, faces
+
+
+def _is_int(word):
+    return word.lstrip("-").isdigit()
+
+
 def write_off(path, vertices, faces):
     with open(path, "w") as f:
         f.write(f"OFF\n{len(vertices)} {len(faces)} 0\n")
