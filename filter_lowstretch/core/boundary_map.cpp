@@ -1,5 +1,6 @@
 #include "boundary_map.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace lowstretch {
@@ -30,11 +31,28 @@ Eigen::MatrixXd circle_boundary(const DiskMesh& disk) {
   return uv;
 }
 
-Eigen::MatrixXd square_boundary(const DiskMesh& disk, const std::array<int, 4>& corners,
-                                const std::array<bool, 4>& bow) {
+namespace {
+
+// Outward bulge at parameter t of a side whose kinks are at `kink_t` (each in (0,1)): a sum of
+// tents, each zero at the corners and bending once at its kink, so concave, scaled so that its
+// largest value is kKinkBulge. Zero without kinks.
+double bulge(double t, const std::vector<double>& kink_t) {
+  if (kink_t.empty()) return 0.0;
+  const auto tents = [&](double x) {
+    double sum = 0;
+    for (double k : kink_t) sum += std::min(x / k, (1 - x) / (1 - k));
+    return sum;
+  };
+  double highest = 0;  // a concave polyline peaks at one of its kinks
+  for (double k : kink_t) highest = std::max(highest, tents(k));
+  return kKinkBulge * tents(t) / highest;
+}
+
+}  // namespace
+
+Eigen::MatrixXd square_boundary(const DiskMesh& disk, const std::array<int, 4>& corners, const std::vector<int>& kinks) {
   static const double corner_uv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   static const double outward[4][2] = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
-  const double bow_height = 0.25;
   const std::vector<double> arc = boundary_arc_lengths(disk);
   const int n = int(disk.boundary.size());
   Eigen::MatrixXd uv(n, 2);
@@ -43,13 +61,18 @@ Eigen::MatrixXd square_boundary(const DiskMesh& disk, const std::array<int, 4>& 
     const int to = side < 3 ? corners[size_t(side) + 1] : corners[0] + n;
     const auto arc_at = [&](int i) { return i < n ? arc[size_t(i)] : arc[size_t(i - n)] + arc[size_t(n)]; };
     const double span = arc_at(to) - arc_at(from);
+    const auto t_of = [&](int i) { return span > 0 ? (arc_at(i) - arc_at(from)) / span : 0.0; };
+    std::vector<double> kink_t;
+    for (int k : kinks) {
+      const int unrolled = k < from ? k + n : k;
+      if (unrolled > from && unrolled < to) kink_t.push_back(t_of(unrolled));
+    }
     for (int i = from; i < to; ++i) {
-      const double t = span > 0 ? (arc_at(i) - arc_at(from)) / span : 0.0;
+      const double t = t_of(i), b = bulge(t, kink_t);
       const double* a = corner_uv[side];
-      const double* b = corner_uv[(side + 1) % 4];
-      const double bulge = bow[size_t(side)] ? 4 * bow_height * t * (1 - t) : 0.0;
-      uv(i % n, 0) = a[0] + t * (b[0] - a[0]) + bulge * outward[side][0];
-      uv(i % n, 1) = a[1] + t * (b[1] - a[1]) + bulge * outward[side][1];
+      const double* c = corner_uv[(side + 1) % 4];
+      uv(i % n, 0) = a[0] + t * (c[0] - a[0]) + b * outward[side][0];
+      uv(i % n, 1) = a[1] + t * (c[1] - a[1]) + b * outward[side][1];
     }
   }
   const Eigen::RowVector2d lo = uv.colwise().minCoeff(), hi = uv.colwise().maxCoeff();

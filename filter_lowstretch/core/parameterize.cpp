@@ -54,8 +54,8 @@ Error boundary_positions(const DiskMesh& disk, BoundaryShape shape, Eigen::Matri
       if (corners.collapsed_chords > 0)
         notes.push_back(std::to_string(corners.collapsed_chords) +
                         " interior edges join two boundary vertices of one square side whatever the corners: "
-                        "those sides are bowed outward (by a quarter of their length) so that no triangle collapses");
-      boundary_uv = square_boundary(disk, corners.corners, corners.bow_side);
+                        "those sides bend outward slightly (at most 0.8% of their length) so that no triangle collapses");
+      boundary_uv = square_boundary(disk, corners.corners, corners.kinks);
       return {};
     }
   }

@@ -47,15 +47,6 @@ int collapsed_chords(const std::vector<Arc>& arcs, const std::array<int, 4>& cor
   return collapsed;
 }
 
-// The side (0..3) whose loop positions [corner k, corner k+1] hold `position`.
-int side_of(int position, const std::array<int, 4>& corners, int n) {
-  for (int k = 0; k < 4; ++k) {
-    const int length = (corners[size_t((k + 1) % 4)] - corners[size_t(k)] + n) % n;
-    if ((position - corners[size_t(k)] + n) % n < length) return k;
-  }
-  return 0;
-}
-
 }  // namespace
 
 namespace {
@@ -140,7 +131,7 @@ SquareCorners choose_square_corners(const DiskMesh& disk) {
   const std::vector<Arc> arcs = arcs_needing_a_corner(disk);
   if (collapsed_chords(arcs, result.corners, n) == 0) return result;
   // The search costs about 3 n^2 steps per position of the shortest arc: past this many
-  // boundary vertices, bow the sides instead of searching.
+  // boundary vertices, kink the sides instead of searching.
   const int largest_searched_loop = 10000;
   // Name the corner inside the shortest arc c0 and try positions of it spread over the arc.
   const Arc shortest = *std::min_element(arcs.begin(), arcs.end(),
@@ -150,10 +141,10 @@ SquareCorners choose_square_corners(const DiskMesh& disk) {
   const int tries = std::min(shortest.count, 32);
   for (int j = 0; j < tries && n <= largest_searched_loop; ++j)
     best_corners_from((shortest.first + int((long long)j * shortest.count / tries)) % n, arc, arcs, best_cost, best);
-  if (best_cost == std::numeric_limits<double>::infinity()) {  // more separate ears than corners: bow sides
+  if (best_cost == std::numeric_limits<double>::infinity()) {  // more separate ears than corners: kink the sides
     result.collapsed_chords = collapsed_chords(arcs, result.corners, n);
     for (const Arc& a : arcs)
-      if (!holds_a_corner(a, result.corners, n)) result.bow_side[size_t(side_of(a.first, result.corners, n))] = true;
+      if (!holds_a_corner(a, result.corners, n)) result.kinks.push_back((a.first + a.count / 2) % n);
     return result;
   }
   std::sort(best.begin(), best.end());

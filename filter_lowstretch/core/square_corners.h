@@ -1,6 +1,7 @@
 // Where to put the four corners of the square boundary.
 #pragma once
 #include <array>
+#include <vector>
 
 #include "disk_mesh.h"
 
@@ -9,10 +10,11 @@ namespace lowstretch {
 struct SquareCorners {
   std::array<int, 4> corners{};  // increasing positions in disk.boundary
   // Interior edges whose two boundary endpoints still end up on one side (each would collapse
-  // the triangles between it and the side): 0 unless no choice of corners avoids it. The sides
-  // that hold them are marked in bow_side: square_boundary bows them outward.
+  // the triangles between it and the side): 0 unless no choice of corners avoids it. For each,
+  // the loop position halfway between its endpoints is in kinks: square_boundary bends the side
+  // outward there.
   int collapsed_chords = 0;
-  std::array<bool, 4> bow_side{};
+  std::vector<int> kinks;
   bool moved = false;            // corners differ from the quarter-arc-length choice
 };
 

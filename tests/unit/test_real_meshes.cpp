@@ -54,6 +54,14 @@ void expect_good_disk(const std::string& path) {
     // zero-area triangles, and no pass lowers its stretch, so U0 is kept.
     if (path.find("degen_sliding_disk_8v") == std::string::npos) EXPECT_LT(kept.l2_stretch, r.passes[0].l2_stretch);
     if (r.passes.size() > 1) EXPECT_LE(kept.l2_stretch, r.passes[1].l2_stretch);
+    if (shape == BoundaryShape::Square) {  // the square stays a square, even where sides must bend
+      double covered = 0;
+      for (Eigen::Index f = 0; f < F.rows(); ++f) {
+        const Eigen::RowVector2d a = r.uv.row(F(f, 0)), b = r.uv.row(F(f, 1)), c = r.uv.row(F(f, 2));
+        covered += 0.5 * std::abs((b - a).x() * (c - a).y() - (c - a).x() * (b - a).y());
+      }
+      EXPECT_GE(covered, 0.98);
+    }
   }
 }
 

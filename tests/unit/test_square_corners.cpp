@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "core/boundary_map.h"
 #include "core/disk_mesh.h"
 #include "core/parameterize.h"
 #include "core/square_corners.h"
@@ -57,7 +58,7 @@ TEST(SquareCorners, FanPolygonGetsCornersAtItsEarTips) {
   }
 }
 
-TEST(SquareCorners, MoreEarsThanCornersBowTheSidesInsteadOfCollapsing) {
+TEST(SquareCorners, MoreEarsThanCornersBendTheSidesSlightlyInsteadOfCollapsing) {
   // A 15-gon with five ears (3i, 3i+1, 3i+2): five tips cannot all be corners of a square.
   const int n = 15;
   Eigen::MatrixXd V(n, 3);
@@ -74,6 +75,7 @@ TEST(SquareCorners, MoreEarsThanCornersBowTheSidesInsteadOfCollapsing) {
   ASSERT_FALSE(make_disk_mesh(V, F, disk));
   const SquareCorners c = choose_square_corners(disk);
   EXPECT_GT(c.collapsed_chords, 0);
+  EXPECT_EQ(c.kinks.size(), size_t(c.collapsed_chords));
   const Result r = parameterize(V, F);
   ASSERT_FALSE(r.error);
   for (const PassMetrics& p : r.passes) {
@@ -81,4 +83,42 @@ TEST(SquareCorners, MoreEarsThanCornersBowTheSidesInsteadOfCollapsing) {
     EXPECT_EQ(p.degenerate, 0);
   }
   EXPECT_FALSE(r.notes.empty());
+  // The square stays a square: the kinked side bulges by at most kKinkBulge of its length, so the map
+  // covers nearly all of its bounding square (a side bowed by a quarter covered about 0.8).
+  double covered = 0;
+  for (Eigen::Index f = 0; f < F.rows(); ++f) {
+    const Eigen::RowVector2d a = r.uv.row(F(f, 0)), b = r.uv.row(F(f, 1)), c2 = r.uv.row(F(f, 2));
+    covered += 0.5 * std::abs((b - a).x() * (c2 - a).y() - (c2 - a).x() * (b - a).y());
+  }
+  EXPECT_GT(covered, 0.985);
+  EXPECT_LE(covered, 1.0 + 1e-12);
+}
+
+TEST(SquareCorners, KinkedSideIsConvexAndBendsAtEveryKink) {
+  // A 40-gon boundary on one side of the square with kinks at 10 and 25 (of the first side,
+  // positions 0..10 .. 40): the bulge is concave and strictly above every chord over a kink.
+  const int n = 40;
+  Eigen::MatrixXd V(n + 1, 3);
+  for (int i = 0; i < n; ++i) V.row(i) << std::cos(2 * 3.14159265358979 * i / n), std::sin(2 * 3.14159265358979 * i / n), 0;
+  V.row(n) << 0, 0, 0;
+  Eigen::MatrixXi F(n, 3);
+  for (int i = 0; i < n; ++i) F.row(i) << i, (i + 1) % n, n;
+  DiskMesh disk;
+  ASSERT_FALSE(make_disk_mesh(V, F, disk));
+  const std::array<int, 4> corners{0, 10, 20, 30};
+  const Eigen::MatrixXd plain = square_boundary(disk, corners);
+  const Eigen::MatrixXd kinked = square_boundary(disk, corners, {3, 7});
+  // Only the first side (positions 0..10, along y = 0 before fitting) moves off its line.
+  const auto cross = [](const Eigen::RowVector2d& a, const Eigen::RowVector2d& b, const Eigen::RowVector2d& c) {
+    return (b - a).x() * (c - a).y() - (c - a).x() * (b - a).y();
+  };
+  for (int i = 1; i < 10; ++i)  // every consecutive triple turns left: the side is convex
+    EXPECT_GE(cross(kinked.row(i - 1), kinked.row(i), kinked.row(i + 1)), -1e-15) << i;
+  EXPECT_GT(cross(kinked.row(2), kinked.row(3), kinked.row(4)), 1e-6);   // bends at the kinks
+  EXPECT_GT(cross(kinked.row(6), kinked.row(7), kinked.row(8)), 1e-6);
+  EXPECT_NEAR(cross(kinked.row(4), kinked.row(5), kinked.row(6)), 0.0, 1e-12);  // straight between
+  const double bulge = (kinked.col(1).minCoeff() - kinked.row(0).y());
+  EXPECT_LT(bulge, 0.0);   // outward is -y for the first side
+  EXPECT_GE(bulge, -kKinkBulge / (1 + kKinkBulge) - 1e-12);
+  EXPECT_NEAR(cross(plain.row(2), plain.row(3), plain.row(4)), 0.0, 1e-12);  // without kinks: a line
 }
