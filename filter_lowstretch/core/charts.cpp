@@ -191,28 +191,20 @@ ChartsResult failed(Error error) {
   return result;
 }
 
-ChartsResult from_disk(const Eigen::MatrixXi& F, Result disk, const ChartOptions& options) {
+// A disk as one chart: parameterize's map and pass history; measured later, like a layout.
+ChartsResult from_disk(const Eigen::MatrixXi& F, Result disk) {
   ChartsResult result;
   result.input_is_disk = true;
   result.corner_uv.resize(F.rows(), 6);
   for (Eigen::Index f = 0; f < F.rows(); ++f)
     for (int k = 0; k < 3; ++k) result.corner_uv.block(f, 2 * k, 1, 2) = disk.uv.row(F(f, k));
-  keep_inside_gutter(options, result.corner_uv);
   result.face_chart.assign(size_t(F.rows()), 0);
-  result.face_stretch = std::move(disk.face_stretch);
-  result.vertex_stretch = std::move(disk.vertex_stretch);
-  result.layout = disk.passes.at(size_t(disk.chosen_pass));
   for (const PassMetrics& p : disk.passes) result.passes.push_back({p.pass, p.l2_stretch, p.flipped, p.degenerate});
   Chart chart;
   chart.faces = int(F.rows());
-  chart.l2_stretch = result.layout.l2_stretch;
   chart.chosen_pass = disk.chosen_pass;
   chart.passes = int(disk.passes.size());
   result.charts.push_back(chart);
-  for (Eigen::Index f = 0; f < F.rows(); ++f) {
-    const auto corner = [&](int k) { return Eigen::RowVector2d(result.corner_uv.block(f, 2 * k, 1, 2)); };
-    result.coverage += std::abs(uv_area(corner(0), corner(1), corner(2)));
-  }
   result.seconds_total = disk.seconds_total;
   result.notes = std::move(disk.notes);
   result.disk_passes = std::move(disk.passes);
@@ -259,9 +251,9 @@ Error solve_charts(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, doub
 }
 
 // Packs the charts' boxes, places every corner, then moves and scales the whole layout uniformly
-// into [0,1]^2, then inside the gutter; fills result.corner_uv and face_chart.
+// into [0,1]^2; fills result.corner_uv and face_chart.
 Error lay_out(std::vector<SolvedChart>& solved, const std::vector<std::vector<int>>& faces_of, Eigen::Index face_count,
-              const ChartPacker& pack, const ChartOptions& options, ChartsResult& result) {
+              const ChartPacker& pack, ChartsResult& result) {
   std::vector<Eigen::AlignedBox2d> boxes;
   for (const SolvedChart& s : solved) boxes.push_back(s.box);
   std::vector<ChartPlacement> placements;
@@ -285,7 +277,6 @@ Error lay_out(std::vector<SolvedChart>& solved, const std::vector<std::vector<in
         result.corner_uv.block(f, 2 * k, 1, 2) = p.cwiseMax(0.0).cwiseMin(1.0).transpose();
       }
     }
-  keep_inside_gutter(options, result.corner_uv);
   return {};
 }
 
@@ -326,6 +317,44 @@ void measure_layout(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, int
   for (size_t c = 0; c < faces_of.size(); ++c) result.charts[c].l2_stretch = l2_stretch(s, faces_of[c]);
 }
 
+// The measures of `from` (stretch, distortions, flips) into `to`, whose pass and timings stay.
+void copy_measures(const PassMetrics& from, PassMetrics& to) {
+  to.l2_stretch = from.l2_stretch;
+  to.linf_stretch = from.linf_stretch;
+  to.edge_distortion = from.edge_distortion;
+  to.angle_distortion = from.angle_distortion;
+  to.area_distortion = from.area_distortion;
+  to.flipped = from.flipped;
+  to.degenerate = from.degenerate;
+}
+
+double corner_area(const Eigen::MatrixXd& corner_uv, Eigen::Index f) {
+  const auto c = [&](int k) { return Eigen::Vector2d(corner_uv.block(f, 2 * k, 1, 2).transpose()); };
+  return uv_area(c(0), c(1), c(2));
+}
+
+// The layout as MeshLab stores it: inside the gutter, rounded to float, then measured; counts
+// the triangles no texture shows (smaller than a texel of 4096^2) and those that rounding flips or
+// collapses (a note).
+void store(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, int vertex_rows,
+           const std::vector<std::vector<int>>& faces_of, const ChartOptions& options, ChartsResult& result) {
+  keep_inside_gutter(options, result.corner_uv);
+  std::vector<char> positive(size_t(F.rows()));
+  for (Eigen::Index f = 0; f < F.rows(); ++f) positive[size_t(f)] = corner_area(result.corner_uv, f) > 0;
+  result.corner_uv = result.corner_uv.cast<float>().cast<double>();
+  const double texel = 1.0 / (4096.0 * 4096.0);
+  for (Eigen::Index f = 0; f < F.rows(); ++f) {
+    const double area = corner_area(result.corner_uv, f);
+    result.subtexel_triangles += std::abs(area) < texel;
+    result.float_collapsed += positive[size_t(f)] && !(area > 0);
+  }
+  if (result.float_collapsed > 0)
+    result.notes.push_back(std::to_string(result.float_collapsed) +
+                           " UV triangles flip or collapse when their texture coordinates are rounded to float, "
+                           "as MeshLab stores them: the metrics count them");
+  measure_layout(unit_V, F, vertex_rows, faces_of, result);
+}
+
 }  // namespace
 
 ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options,
@@ -333,7 +362,19 @@ ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi
   const Clock::time_point start = Clock::now();
   if (Error e = check_texture_options(options)) return failed(e);
   Result whole = parameterize(V, F, options.disk);
-  if (!whole.error) return from_disk(F, std::move(whole), options);
+  if (!whole.error) {
+    ChartsResult result = from_disk(F, std::move(whole));
+    double unit = 1;
+    std::vector<int> all(static_cast<size_t>(F.rows()));
+    for (Eigen::Index f = 0; f < F.rows(); ++f) all[size_t(f)] = int(f);
+    store(unit_box_of_used(V, F, unit), F, int(V.rows()), {all}, options, result);
+    // The layout is the kept pass, as stored: its number, timings and solver stay.
+    const PassMetrics measured = result.layout;
+    result.layout = result.disk_passes.at(size_t(result.chosen_pass));
+    copy_measures(measured, result.layout);
+    result.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
+    return result;
+  }
   if (options.non_disk == NonDisk::Reject || !charts_can_fix(whole.error.code)) return failed(whole.error);
   if (!pack) return failed({ErrorCode::InvalidOption, 0, "charts need a packer"});
 
@@ -351,8 +392,8 @@ ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi
   ChartsResult result;
   std::vector<SolvedChart> solved;
   if (Error e = solve_charts(unit_V, F, unit, faces_of, options.disk, solved, result)) return failed(e);
-  if (Error e = lay_out(solved, faces_of, F.rows(), pack, options, result)) return failed(e);
-  measure_layout(unit_V, F, int(V.rows()), faces_of, result);
+  if (Error e = lay_out(solved, faces_of, F.rows(), pack, result)) return failed(e);
+  store(unit_V, F, int(V.rows()), faces_of, options, result);
   result.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
   result.layout.seconds = result.seconds_total;
   return result;

@@ -51,13 +51,18 @@ struct LayoutPass {
 
 struct ChartsResult {
   Error error;  // error.code != None: nothing below is filled
-  // #F x 6: (u, v) of corners 0, 1, 2 of every face, in [g, 1 - g]^2, g = gutter / texture_size.
+  // #F x 6: (u, v) of corners 0, 1, 2 of every face, in [g, 1 - g]^2, g = gutter / texture_size,
+  // rounded to float as MeshLab stores them: `layout`, face_stretch, vertex_stretch, coverage and
+  // the charts' L2 stretch are measured on these, so they describe the map a user reads back.
   Eigen::MatrixXd corner_uv;
   std::vector<int> face_chart;            // chart of each face
   Eigen::VectorXd face_stretch;           // normalized over the whole layout, inf if flipped
   Eigen::VectorXd vertex_stretch;         // per input vertex (0 if unused)
   std::vector<Chart> charts;
-  PassMetrics layout;                     // the paper's metrics of the final layout, whole mesh
+  PassMetrics layout;                     // the paper's metrics of corner_uv (a disk: its kept pass's
+                                          // number and timings, measured after rounding)
+  int subtexel_triangles = 0;             // UV triangles smaller than one texel of a 4096^2 texture
+  int float_collapsed = 0;                // of them, positive in double, flipped or zero in float
   std::vector<LayoutPass> passes;         // L2 stretch and flips of every pass, whole mesh
   double seam_length = 0;                 // sum over the charts
   double coverage = 0;                    // fraction of [0,1]^2 covered by the UV triangles

@@ -169,6 +169,7 @@ std::vector<OutputValue> output_values(const ChartsResult& charts) {
       integer("charts", int(charts.charts.size())),
       real("seam_length", charts.seam_length),
       real("coverage", charts.coverage),
+      integer("subtexel_triangles", charts.subtexel_triangles),
   };
 }
 

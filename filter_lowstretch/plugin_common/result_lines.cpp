@@ -22,6 +22,14 @@ std::string solver_text(const PassMetrics& p) {
   return p.solver_fell_back ? "direct (multigrid did not converge)" : "direct";
 }
 
+// The map the mesh holds: float texture coordinates inside the gutter, as the metrics describe it.
+std::string stored_line(const ChartsResult& result) {
+  const PassMetrics& p = result.layout;
+  return format("texture coordinates as stored (float): L2 stretch %.6g, Linf stretch %.6g, flipped %d, degenerate %d, "
+                "coverage %.4f; %d UV triangles smaller than a texel of a 4096x4096 texture",
+                p.l2_stretch, p.linf_stretch, p.flipped, p.degenerate, result.coverage, result.subtexel_triangles);
+}
+
 std::vector<std::string> disk_lines(const ChartsResult& result) {
   std::vector<std::string> lines;
   for (const PassMetrics& p : result.disk_passes)
@@ -32,6 +40,7 @@ std::vector<std::string> disk_lines(const ChartsResult& result) {
   const PassMetrics& kept = result.disk_passes.at(size_t(result.chosen_pass));
   lines.push_back(format("kept pass %d (L2 stretch %.6g); stop reason: %s; total %.3f s", kept.pass, kept.l2_stretch,
                          to_string(result.stop_reason), result.seconds_total));
+  lines.push_back(stored_line(result));
   for (const std::string& note : result.notes) lines.push_back("note: " + note);
   return lines;
 }
@@ -56,6 +65,7 @@ std::vector<std::string> chart_lines(const ChartsResult& result) {
                          result.charts.size(), result.seam_length, result.coverage, p.l2_stretch, p.linf_stretch,
                          p.edge_distortion, p.angle_distortion, p.area_distortion, p.flipped, p.degenerate,
                          result.seconds_total));
+  lines.push_back(stored_line(result));
   for (const std::string& note : result.notes) lines.push_back("note: " + note);
   return lines;
 }

@@ -152,8 +152,8 @@ std::string pass_json(const PassMetrics& p) {
   return o.str();
 }
 
-// A disk's passes as before; with --non-disk charts also the charts, and for a mesh that is not
-// a disk the layout's metrics in place of the passes.
+// A disk's passes; always the map as written (layout, coverage, tiny triangles); with
+// --non-disk charts also the charts.
 void print_json(const Arguments& a, const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartsResult& c) {
   std::ostringstream o;
   o << "{\"input\": " << quoted(a.input) << ", \"vertices\": " << V.rows() << ", \"faces\": " << F.rows()
@@ -165,10 +165,13 @@ void print_json(const Arguments& a, const Eigen::MatrixXd& V, const Eigen::Matri
     for (size_t i = 0; i < c.disk_passes.size(); ++i) o << (i ? ",\n  " : "\n  ") << pass_json(c.disk_passes[i]);
     o << "],\n \"chosen_pass\": " << c.chosen_pass << ", \"stop_reason\": " << quoted(to_string(c.stop_reason));
   }
+  // The map as written (float texture coordinates inside the gutter), disk or charts.
+  o << ",\n \"texture_size\": " << a.charts.texture_size << ", \"gutter\": " << number(a.charts.gutter)
+    << ", \"coverage\": " << number(c.coverage) << ", \"subtexel_triangles\": " << c.subtexel_triangles
+    << ", \"float_collapsed\": " << c.float_collapsed << ",\n \"layout\": " << pass_json(c.layout);
   if (a.charts.non_disk == NonDisk::Charts) {
     o << ",\n \"non_disk\": \"charts\", \"input_is_disk\": " << (c.input_is_disk ? "true" : "false")
-      << ", \"chart_count\": " << c.charts.size() << ", \"seam_length\": " << number(c.seam_length)
-      << ", \"coverage\": " << number(c.coverage) << ",\n \"layout\": " << pass_json(c.layout) << ",\n \"charts\": [";
+      << ", \"chart_count\": " << c.charts.size() << ", \"seam_length\": " << number(c.seam_length) << ",\n \"charts\": [";
     for (size_t i = 0; i < c.charts.size(); ++i) {
       const Chart& ch = c.charts[i];
       o << (i ? ",\n  " : "\n  ") << "{\"faces\": " << ch.faces << ", \"closed_holes\": " << ch.closed_holes

@@ -1,4 +1,4 @@
-// Reading meshes with the tool's own strict readers and writing them with vcglib's exporters,
+// Reading meshes with the tool's own strict readers and writing them (PLY through vcglib's exporter, OBJ by obj_writer.h),
 // guarded against files that would make them crash or allocate without bound.
 #pragma once
 #include <string>

@@ -49,6 +49,8 @@ FAIL_RE = re.compile(rf"{FILTER} failed: (.*)")
 CHARTS_RE = re.compile(rf"(\d+) charts, seam length {NUM}, coverage {NUM}; whole layout: L2 stretch {NUM}, "
                        rf"Linf stretch {NUM}, edge distortion {NUM}, angle distortion {NUM}, area distortion {NUM}, "
                        rf"flipped (\d+), degenerate (\d+)")
+STORED_RE = re.compile(rf"texture coordinates as stored \(float\): L2 stretch {NUM}, Linf stretch {NUM}, "
+                       rf"flipped (\d+), degenerate (\d+), coverage {NUM}; (\d+) UV triangles smaller than a texel")
 LOADED_RE = re.compile(r"loaded has (\d+) vn (\d+) fn")
 # What README.md of ../shared/meshes says is wrong with each bad mesh, as words of the message.
 EXPECTED = {

@@ -37,3 +37,26 @@ def map_stretch(vertices, faces, corner_uv):
     scale = math.sqrt(sum(abs(x) for x in area_u) / sum(area))
     l2 = scale * math.sqrt(sum(a * s * s for a, s in zip(area, sigma)) / sum(area))
     return area_u, [scale * s for s in sigma], l2, area
+
+
+def map_linf(vertices, faces, corner_uv):
+    """The normalized Linf stretch of a map given per corner: the largest singular value of any
+    triangle's map, sqrt((a + c + sqrt((a - c)^2 + 4 b^2)) / 2), times the same scale as map_stretch;
+    inf when a triangle is flipped or has zero area."""
+    worst, area_u_sum, area_sum = 0.0, 0.0, 0.0
+    for f, (i, j, k) in enumerate(faces):
+        e1, e2, a3 = edges_and_area(vertices[i], vertices[j], vertices[k])
+        s1, t1 = corner_uv[3 * f]
+        s2, t2 = corner_uv[3 * f + 1]
+        s3, t3 = corner_uv[3 * f + 2]
+        area_u = 0.5 * ((s2 - s1) * (t3 - t1) - (s3 - s1) * (t2 - t1))
+        area_u_sum += abs(area_u)
+        area_sum += a3
+        if area_u <= 0:
+            worst = math.inf
+            continue
+        ss = [(e1[c] * (t3 - t1) - e2[c] * (t2 - t1)) / (2 * area_u) for c in range(3)]
+        st = [(e2[c] * (s2 - s1) - e1[c] * (s3 - s1)) / (2 * area_u) for c in range(3)]
+        a, b, c = (sum(x * x for x in ss), sum(x * y for x, y in zip(ss, st)), sum(y * y for y in st))
+        worst = max(worst, math.sqrt(0.5 * (a + c + math.sqrt((a - c) ** 2 + 4 * b * b))))
+    return math.sqrt(area_u_sum / area_sum) * worst

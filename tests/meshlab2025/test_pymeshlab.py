@@ -31,7 +31,8 @@ NAME = "compute_texcoord_parametrization_low_stretch"
 GUTTER = 2 / 1024  # the default gutter (texels) over the default texture size: where UV stays
 KEYS = {"l2_stretch": float, "linf_stretch": float, "edge_distortion": float, "angle_distortion": float,
         "area_distortion": float, "flipped": int, "degenerate": int, "kept_pass": int, "passes": int,
-        "initial_l2_stretch": float, "seconds": float, "charts": int, "seam_length": float, "coverage": float}
+        "initial_l2_stretch": float, "seconds": float, "charts": int, "seam_length": float, "coverage": float,
+        "subtexel_triangles": int}
 
 
 class Checks:
@@ -99,17 +100,15 @@ def inside(args):
         area_u, face_sigma, l2, area = stretch(np, V, F, wtc.astype(np.float64))
         check(int((area_u <= 0).sum()) == 0, f"no flipped or zero-area triangle in the texcoords "
               f"({int((area_u < 0).sum())} flipped, {int((area_u == 0).sum())} zero)")
-        check(abs(l2 - out["l2_stretch"]) <= 1e-4 * out["l2_stretch"],
+        check(abs(l2 - out["l2_stretch"]) <= 1e-9 * out["l2_stretch"],
               f"L2 stretch recomputed from the wedge texcoords {l2:.6g} = returned {out['l2_stretch']:.6g}")
         if check(m.has_face_scalar(), "the mesh has per-face quality"):
-            # The quality is the core's double value; the recomputed one sees float texcoords, which
-            # moves the stretch of thin parameter triangles by up to a few percent: compare the bulk,
-            # and the area-weighted mean of the quality with the returned L2 stretch.
+            # The quality, the dict and the texcoords all describe the stored map.
             q = m.face_scalar_array()
             rel = np.abs(q - face_sigma) / np.maximum(face_sigma, 1e-30)
-            check(float(np.percentile(rel, 99)) <= 1e-3,
-                  f"per-face quality = recomputed face stretch (relative difference: 99th percentile "
-                  f"{np.percentile(rel, 99):.1e}, largest {rel.max():.1e})")
+            check(float(rel.max()) <= 1e-6,
+                  f"per-face quality = face stretch recomputed from the texcoords (largest relative difference "
+                  f"{rel.max():.1e})")
             l2_quality = float(np.sqrt((area * q ** 2).sum() / area.sum()))
             check(abs(l2_quality - out["l2_stretch"]) <= 1e-9 * out["l2_stretch"],
                   f"sqrt(sum A q^2 / sum A) over the per-face quality {l2_quality:.10g} = returned L2 stretch")

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/charts.h"
+#include "core/stretch.h"
 #include "generated_meshes.h"
 #include "mesh_io.h"
 #include "vcg/mesh_arrays.h"
@@ -153,20 +154,58 @@ TEST(Charts, DiskGivesParameterizesResult) {
   EXPECT_TRUE(r.input_is_disk);
   ASSERT_EQ(r.charts.size(), 1u);
   EXPECT_EQ(r.seam_length, 0.0);
-  // The same map, moved inside the gutter: 2 texels of a 1024 texture on every side.
+  // The same map, moved inside the gutter (2 texels of a 1024 texture on every side) and rounded
+  // to float as MeshLab stores it.
   const double g = 2.0 / 1024;
-  double largest_difference = 0;
   for (Eigen::Index f = 0; f < m.F.rows(); ++f)
     for (int k = 0; k < 3; ++k) {
-      const Eigen::Vector2d expected = disk.uv.row(m.F(f, k)).transpose() * (1 - 2 * g) + Eigen::Vector2d::Constant(g);
-      largest_difference = std::max(largest_difference, (corner(r, f, k) - expected).cwiseAbs().maxCoeff());
+      const Eigen::Vector2d moved = disk.uv.row(m.F(f, k)).transpose() * (1 - 2 * g) + Eigen::Vector2d::Constant(g);
+      EXPECT_EQ(corner(r, f, k), moved.cast<float>().cast<double>());
     }
-  EXPECT_LT(largest_difference, 1e-15);
   // The square boundary reaches the gutter on every side, and no further.
   EXPECT_NEAR(r.corner_uv.minCoeff(), g, 1e-15);
   EXPECT_NEAR(r.corner_uv.maxCoeff(), 1 - g, 1e-15);
   EXPECT_NEAR(r.coverage, (1 - 2 * g) * (1 - 2 * g), 1e-9);
-  EXPECT_EQ(r.layout.l2_stretch, disk.passes[size_t(disk.chosen_pass)].l2_stretch);
+  const PassMetrics& kept = disk.passes[size_t(disk.chosen_pass)];
+  EXPECT_EQ(r.layout.pass, kept.pass);
+  EXPECT_NEAR(r.layout.l2_stretch, kept.l2_stretch, 1e-6 * kept.l2_stretch);
+  EXPECT_EQ(r.subtexel_triangles, 0);
+  EXPECT_EQ(r.float_collapsed, 0);
+}
+
+TEST(Charts, MetricsAreThoseOfTheCoordinatesAsStored) {
+  const testmesh::Mesh m = testmesh::hemisphere(8, 16);
+  const ChartsResult r = charts_of(m);
+  ASSERT_FALSE(r.error) << message(r.error);
+  EXPECT_EQ(r.corner_uv, r.corner_uv.cast<float>().cast<double>());  // what MeshLab's float holds
+  Eigen::MatrixXd corner_V(3 * m.F.rows(), 3), corner_uv(3 * m.F.rows(), 2);
+  Eigen::MatrixXi corner_F(m.F.rows(), 3);
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      corner_V.row(3 * f + k) = m.V.row(m.F(f, k));
+      corner_uv.row(3 * f + k) = r.corner_uv.block(f, 2 * k, 1, 2);
+      corner_F(f, k) = int(3 * f + k);
+    }
+  EXPECT_NEAR(l2_stretch(face_stretch(corner_V, corner_F, corner_uv)), r.layout.l2_stretch, 1e-12);
+}
+
+TEST(Charts, TrianglesThatFloatRoundingCollapsesAreCountedAndNoted) {
+  // A unit square with its centre vertex 1e-12 above the bottom side: the bottom triangle is
+  // thin but positive in double; every map keeps the flat square, and in float (the centre's v
+  // rounds onto the gutter line of the two bottom corners) the triangle has zero area.
+  Eigen::MatrixXd V(5, 3);
+  V << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 1e-12, 0;
+  Eigen::MatrixXi F(4, 3);
+  F << 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4;
+  const ChartsResult r = parameterize_charts(V, F, ChartOptions(), pack_charts_with_vcglib);
+  ASSERT_FALSE(r.error) << message(r.error);
+  const PassMetrics& kept = r.disk_passes[size_t(r.chosen_pass)];
+  EXPECT_EQ(kept.flipped + kept.degenerate, 0);  // in double
+  EXPECT_EQ(r.float_collapsed, 1);
+  EXPECT_EQ(r.layout.flipped + r.layout.degenerate, 1);  // as stored
+  EXPECT_GE(r.subtexel_triangles, 1);
+  EXPECT_TRUE(std::any_of(r.notes.begin(), r.notes.end(),
+                          [](const std::string& n) { return n.find("rounded to float") != std::string::npos; }));
 }
 
 TEST(Charts, GutterIsCountedInTexelsOfTheStatedTexture) {

@@ -120,10 +120,14 @@ TEST(Stretch, AgreesWithVcglibDistortionOnAParameterizedSurface) {
     area += D::Area3D(&tm.face[f]);
     linf = std::max(linf, D::LInfStretchEnergy(&tm.face[f], area_scale));
   }
+  // The reported metrics are those of the texture coordinates as stored (float), which vcglib
+  // measured here; the kept pass, computed in double, differs from them by the rounding only.
+  EXPECT_NEAR(std::sqrt(weighted / area), r.layout.l2_stretch, 1e-9);
+  EXPECT_NEAR(linf, r.layout.linf_stretch, 1e-9 * linf);
+  EXPECT_EQ(D::FoldedNum(tm), r.layout.flipped);
   const PassMetrics& kept = r.disk_passes[size_t(r.chosen_pass)];
-  EXPECT_NEAR(std::sqrt(weighted / area), kept.l2_stretch, 1e-9);
-  EXPECT_NEAR(linf, kept.linf_stretch, 1e-9 * linf);
-  EXPECT_EQ(D::FoldedNum(tm), kept.flipped);
+  EXPECT_EQ(r.layout.pass, kept.pass);
+  EXPECT_NEAR(r.layout.l2_stretch, kept.l2_stretch, 1e-6 * kept.l2_stretch);
 }
 
 TEST(Stretch, VertexStretchIsTheAreaWeightedMeanOfItsFaces) {
