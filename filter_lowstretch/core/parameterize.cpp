@@ -9,6 +9,7 @@
 #include "disk_mesh.h"
 #include "laplacian_solver.h"
 #include "natural_boundary.h"
+#include "refine_stretch.h"
 #include "ring_weights.h"
 #include "square_corners.h"
 #include "stretch.h"
@@ -121,6 +122,25 @@ void keep_pass(const DiskMesh& disk, Eigen::MatrixXd uv, const FaceStretch& stre
     result.face_stretch(f) = stretch.valid(f) ? stretch.normalization * stretch.sigma(f) : inf;
 }
 
+// Lowers the kept map's L2 stretch directly (refine_stretch.h) within `seconds`; notes the gain.
+void refine(const DiskMesh& disk, double seconds, Eigen::MatrixXd& uv, FaceStretch& stretch, Result& result) {
+  RefineOptions options;
+  options.max_seconds = std::max(seconds, 0.05);
+  RefineReport report;
+  const Eigen::MatrixXd refined = refine_stretch(disk, uv, options, report);
+  if (!report.started) {
+    result.notes.push_back("not refined: the kept map has flipped or zero-area triangles");
+    return;
+  }
+  const FaceStretch refined_stretch = face_stretch(disk.V, disk.F, refined);
+  const double before = l2_stretch(stretch), after = l2_stretch(refined_stretch);
+  if (!(after < before)) return;
+  result.notes.push_back("refined: L2 stretch " + number_text(before) + " -> " + number_text(after) + " in " +
+                         std::to_string(report.iterations) + " iterations, " + number_text(report.seconds) + " s");
+  uv = refined;
+  stretch = refined_stretch;
+}
+
 Result failed(Error error) {
   Result result;
   result.error = std::move(error);
@@ -185,6 +205,7 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
   }
 
   note_solver_fallbacks(result);
+  if (options.refine) refine(disk, seconds_since(start) * options.refine_time_factor, best_uv, best_stretch, result);
   keep_pass(disk, best_uv, best_stretch, V.rows(), result);
   result.seconds_total = seconds_since(start);
   report(1.0, "done");

@@ -27,7 +27,7 @@ int FilterLowStretchPlugin::postCondition(QAction*) const { return plugin::writt
 MeshFilterInterface::FILTER_ARITY FilterLowStretchPlugin::filterArity(QAction*) const { return SINGLE_MESH; }
 
 void FilterLowStretchPlugin::initParameterSet(QAction*, MeshModel&, RichParameterList& parameters) {
-  plugin::add_parameters<float, RichParameterList, RichEnum, RichFloat, RichInt>(parameters);
+  plugin::add_parameters<float, RichParameterList, RichEnum, RichFloat, RichInt, RichBool>(parameters);
 }
 
 bool FilterLowStretchPlugin::fail(const std::string& message) {

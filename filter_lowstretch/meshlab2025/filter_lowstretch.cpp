@@ -36,7 +36,7 @@ FilterPlugin::FilterArity FilterLowStretchPlugin::filterArity(const QAction*) co
 
 RichParameterList FilterLowStretchPlugin::initParameterList(const QAction*, const MeshModel&) {
   RichParameterList parameters;
-  plugin::add_parameters<Scalarm, RichParameterList, RichEnum, RichFloat, RichInt>(parameters);
+  plugin::add_parameters<Scalarm, RichParameterList, RichEnum, RichFloat, RichInt, RichBool>(parameters);
   return parameters;
 }
 

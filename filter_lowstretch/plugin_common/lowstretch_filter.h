@@ -48,6 +48,12 @@ struct IntParameter {
   const char* label;
   const char* tooltip;
 };
+struct BoolParameter {
+  const char* name;
+  bool default_value;
+  const char* label;
+  const char* tooltip;
+};
 // The filter's parameters, in the order the dialog lists them.
 struct Parameters {
   EnumParameter boundary;
@@ -57,6 +63,7 @@ struct Parameters {
   EnumParameter non_disk;
   IntParameter texture_size;
   FloatParameter gutter;
+  BoolParameter refine;
 };
 const Parameters& parameters();
 // An enum parameter's entries as MeshLab's RichEnum takes them.
@@ -70,6 +77,7 @@ struct ParameterValues {
   double exponent;
   int max_passes, non_disk, texture_size;
   double gutter;
+  bool refine;
 };
 Error make_options(const ParameterValues& values, ChartOptions& options);
 // The dialog's label of an option the core names in an InvalidOption error ("exponent").
@@ -77,7 +85,7 @@ std::string label_of(const std::string& option);
 
 // The filter's parameters into a MeshLab RichParameterList, in the dialog's order. Both plugin
 // APIs name their parameter classes alike; Scalar is the float type of the MeshLab build.
-template <class Scalar, class List, class Enum, class Float, class Int>
+template <class Scalar, class List, class Enum, class Float, class Int, class Bool>
 void add_parameters(List& list) {
   const Parameters& p = parameters();
   list.addParam(Enum(p.boundary.name, p.boundary.default_index, entries(p.boundary), p.boundary.label, p.boundary.tooltip));
@@ -87,16 +95,17 @@ void add_parameters(List& list) {
   list.addParam(Enum(p.non_disk.name, p.non_disk.default_index, entries(p.non_disk), p.non_disk.label, p.non_disk.tooltip));
   list.addParam(Int(p.texture_size.name, p.texture_size.default_value, p.texture_size.label, p.texture_size.tooltip));
   list.addParam(Float(p.gutter.name, Scalar(p.gutter.default_value), p.gutter.label, p.gutter.tooltip));
+  list.addParam(Bool(p.refine.name, p.refine.default_value, p.refine.label, p.refine.tooltip));
 }
 
-// make_options from the values a MeshLab RichParameterList holds (getEnum, getFloat, getInt in
-// both APIs).
+// make_options from the values a MeshLab RichParameterList holds (getEnum, getFloat, getInt,
+// getBool in both APIs).
 template <class List>
 Error options_from(const List& values, ChartOptions& options) {
   const Parameters& p = parameters();
   return make_options({values.getEnum(p.boundary.name), values.getEnum(p.weights.name), values.getFloat(p.exponent.name),
                        values.getInt(p.max_passes.name), values.getEnum(p.non_disk.name), values.getInt(p.texture_size.name),
-                       values.getFloat(p.gutter.name)},
+                       values.getFloat(p.gutter.name), values.getBool(p.refine.name)},
                       options);
 }
 

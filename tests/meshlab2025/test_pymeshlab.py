@@ -7,7 +7,8 @@ then this script runs itself again with that environment's Python (--inside) and
   - on a real disk, apply_filter returns the dict of output values (kept pass, L2/Linf stretch,
     distortions, flips, time), the mesh gets per-wedge texcoords 2 texels inside [0,1]^2 with no flipped
     triangle, the L2 stretch recomputed from those texcoords and the positions equals the returned
-    one, per-face quality equals the recomputed face stretch, and the Circle boundary works too;
+    one, per-face quality equals the recomputed face stretch, the Circle boundary works too, and
+    refinestretch=True lowers the stretch without a flip;
   - on a mesh that is not a disk it raises PyMeshLabException with the core's message, and the mesh
     is unchanged;
   - with --readme: the README's Python snippet (the ```python block that calls
@@ -120,6 +121,15 @@ def inside(args):
     check(circle["flipped"] == 0 and circle["passes"] <= 4,
           f"boundaryshape='Circle', maxpasses=3: L2 stretch {circle['l2_stretch']:.6g}, {circle['passes']} passes, "
           f"no flip")
+
+    ms.load_new_mesh(args.disk)
+    refined = ms.apply_filter(NAME, refinestretch=True)
+    wtc = ms.current_mesh().wedge_tex_coord_matrix().astype(np.float64)
+    area_u, _, l2, _ = stretch(np, ms.current_mesh().vertex_matrix(), ms.current_mesh().face_matrix(), wtc)
+    check(refined["l2_stretch"] < 0.99 * out["l2_stretch"] and refined["flipped"] + refined["degenerate"] == 0
+          and int((area_u <= 0).sum()) == 0 and abs(l2 - refined["l2_stretch"]) <= 1e-9 * l2,
+          f"refinestretch=True lowers the L2 stretch from {out['l2_stretch']:.6g} to {refined['l2_stretch']:.6g} "
+          f"(recomputed from the texcoords {l2:.6g}), no flip")
 
     ms.load_new_mesh(args.bad)
     m = ms.current_mesh()

@@ -1,0 +1,211 @@
+#include "refine_stretch.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+#include <Eigen/Sparse>
+#include <Eigen/CholmodSupport>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace lowstretch {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// A triangle in a plane of its own: gradients g[k] (2D) of its three hat functions, and its area.
+struct FlatTriangle {
+  Eigen::Matrix<double, 3, 2> g;
+  double area = 0;
+};
+
+std::vector<FlatTriangle> flatten(const DiskMesh& disk) {
+  std::vector<FlatTriangle> flat(size_t(disk.F.rows()));
+  for (Eigen::Index f = 0; f < disk.F.rows(); ++f) {
+    const Eigen::Vector3d p0 = disk.V.row(disk.F(f, 0)), p1 = disk.V.row(disk.F(f, 1)), p2 = disk.V.row(disk.F(f, 2));
+    const Eigen::Vector3d e1 = p1 - p0, e2 = p2 - p0;
+    const double x1 = e1.norm();
+    FlatTriangle& t = flat[size_t(f)];
+    if (!(x1 > 0)) continue;
+    const double x2 = e2.dot(e1) / x1, y2 = e1.cross(e2).norm() / x1;
+    t.area = 0.5 * x1 * y2;
+    if (!(t.area > 0)) continue;
+    // Local coordinates (0,0), (x1,0), (x2,y2): the hat gradients, rotated edges over 2 area.
+    const Eigen::Vector2d q[3] = {{0, 0}, {x1, 0}, {x2, y2}};
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector2d edge = q[(k + 2) % 3] - q[(k + 1) % 3];
+      t.g.row(k) = Eigen::RowVector2d(-edge.y(), edge.x()) / (2 * t.area);
+    }
+  }
+  return flat;
+}
+
+Eigen::Matrix2d jacobian(const FlatTriangle& t, const Eigen::MatrixXd& uv, const Eigen::RowVector3i& face) {
+  Eigen::Matrix2d J = Eigen::Matrix2d::Zero();
+  for (int k = 0; k < 3; ++k) J += uv.row(face(k)).transpose() * t.g.row(k);
+  return J;
+}
+
+// Energy A |J|^2 / (2 det^2); infinite when det <= 0. Adds the gradient to `grad` if given.
+double energy(const DiskMesh& disk, const std::vector<FlatTriangle>& flat, const Eigen::MatrixXd& uv,
+              Eigen::MatrixXd* grad) {
+  double total = 0;
+  if (grad) grad->setZero(uv.rows(), 2);
+  for (Eigen::Index f = 0; f < disk.F.rows(); ++f) {
+    const FlatTriangle& t = flat[size_t(f)];
+    if (!(t.area > 0)) continue;  // a zero-area 3D triangle carries no stretch
+    const Eigen::RowVector3i face = disk.F.row(f);
+    const Eigen::Matrix2d J = jacobian(t, uv, face);
+    const double det = J.determinant();
+    if (!(det > 0)) return std::numeric_limits<double>::infinity();
+    const double norm2 = J.squaredNorm();
+    total += t.area * norm2 / (2 * det * det);
+    if (!grad) continue;
+    Eigen::Matrix2d cofactor;
+    cofactor << J(1, 1), -J(1, 0), -J(0, 1), J(0, 0);
+    const Eigen::Matrix2d dJ = t.area * (J / (det * det) - norm2 / (det * det * det) * cofactor);
+    for (int k = 0; k < 3; ++k) grad->row(face(k)) += (dJ * t.g.row(k).transpose()).transpose();
+  }
+  return total;
+}
+
+// The largest step t along d that keeps every triangle positive (det(J + t K) > 0), capped at 1e9.
+double largest_safe_step(const DiskMesh& disk, const std::vector<FlatTriangle>& flat, const Eigen::MatrixXd& uv,
+                         const Eigen::MatrixXd& d) {
+  double largest = 1e9;
+  for (Eigen::Index f = 0; f < disk.F.rows(); ++f) {
+    const FlatTriangle& t = flat[size_t(f)];
+    if (!(t.area > 0)) continue;
+    const Eigen::RowVector3i face = disk.F.row(f);
+    const Eigen::Matrix2d J = jacobian(t, uv, face), K = jacobian(t, d, face);
+    // det(J + t K) = det J + t (J00 K11 + J11 K00 - J01 K10 - J10 K01) + t^2 det K
+    const double c = J.determinant(), b = J(0, 0) * K(1, 1) + J(1, 1) * K(0, 0) - J(0, 1) * K(1, 0) - J(1, 0) * K(0, 1),
+                 a = K.determinant();
+    double root = std::numeric_limits<double>::infinity();
+    if (std::abs(a) < 1e-300) {
+      if (b < 0) root = -c / b;
+    } else {
+      const double disc = b * b - 4 * a * c;
+      if (disc >= 0) {
+        const double s = std::sqrt(disc);
+        for (double r : {(-b - s) / (2 * a), (-b + s) / (2 * a)})
+          if (r > 0) root = std::min(root, r);
+      }
+    }
+    largest = std::min(largest, root);
+  }
+  return largest;
+}
+
+// Projected Newton (Teran et al. 2005; as in Smith et al. 2019): the energy's Hessian of each
+// triangle with respect to J, its negative eigenvalues clamped to zero, pulled back to the
+// triangle's six texture coordinates; rows of interior unknowns (2 per vertex: u, then v).
+Eigen::SparseMatrix<double> projected_hessian(const DiskMesh& disk, const std::vector<FlatTriangle>& flat,
+                                              const Eigen::MatrixXd& uv, const std::vector<int>& unknown, int count) {
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(size_t(disk.F.rows()) * 36);
+  Eigen::Matrix4d C;  // vec(cofactor(J)) = C vec(J), vec row-major (J00, J01, J10, J11)
+  C << 0, 0, 0, 1, 0, 0, -1, 0, 0, -1, 0, 0, 1, 0, 0, 0;
+  for (Eigen::Index f = 0; f < disk.F.rows(); ++f) {
+    const FlatTriangle& t = flat[size_t(f)];
+    if (!(t.area > 0)) continue;
+    const Eigen::RowVector3i face = disk.F.row(f);
+    const Eigen::Matrix2d J = jacobian(t, uv, face);
+    const double det = J.determinant(), n = J.squaredNorm();
+    const Eigen::Vector4d j(J(0, 0), J(0, 1), J(1, 0), J(1, 1)), c = C * j;
+    Eigen::Matrix4d H = Eigen::Matrix4d::Identity() / (det * det) - 2 * (j * c.transpose() + c * j.transpose()) / (det * det * det) -
+                        n * C / (det * det * det) + 3 * n * c * c.transpose() / (det * det * det * det);
+    H *= t.area;
+    Eigen::Matrix4d projected = H;
+    if (Eigen::LLT<Eigen::Matrix4d>(H).info() != Eigen::Success) {  // not positive definite: clamp
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(H);
+      projected = eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).asDiagonal() * eigen.eigenvectors().transpose();
+    }
+    // vec(J) = G x with x = (u0, u1, u2, v0, v1, v2).
+    Eigen::Matrix<double, 4, 6> G = Eigen::Matrix<double, 4, 6>::Zero();
+    for (int k = 0; k < 3; ++k) {
+      G(0, k) = t.g(k, 0);
+      G(1, k) = t.g(k, 1);
+      G(2, 3 + k) = t.g(k, 0);
+      G(3, 3 + k) = t.g(k, 1);
+    }
+    const Eigen::Matrix<double, 6, 6> Hx = G.transpose() * projected * G;
+    for (int a = 0; a < 6; ++a) {
+      const int ra = unknown[size_t(face(a % 3))];
+      if (ra < 0) continue;
+      for (int b = 0; b < 6; ++b) {
+        const int rb = unknown[size_t(face(b % 3))];
+        if (rb >= 0) entries.emplace_back(2 * ra + a / 3, 2 * rb + b / 3, Hx(a, b));
+      }
+    }
+  }
+  Eigen::SparseMatrix<double> H(2 * count, 2 * count);
+  H.setFromTriplets(entries.begin(), entries.end());
+  return H;
+}
+
+}  // namespace
+
+Eigen::MatrixXd refine_stretch(const DiskMesh& disk, const Eigen::MatrixXd& uv0, const RefineOptions& options,
+                               RefineReport& report) {
+  const Clock::time_point start = Clock::now();
+  const std::vector<FlatTriangle> flat = flatten(disk);
+  Eigen::MatrixXd uv = uv0;
+  double e = energy(disk, flat, uv, nullptr);
+  report = RefineReport();
+  report.energy_before = report.energy_after = e;
+  if (!std::isfinite(e)) return uv;
+  report.started = true;
+  const int n = int(disk.V.rows());
+  std::vector<int> unknown(size_t(n), -1);
+  int count = 0;
+  for (int i = 0; i < n; ++i)
+    if (!disk.is_boundary[size_t(i)]) unknown[size_t(i)] = count++;
+  if (count == 0) return uv;
+  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> newton;  // SuiteSparse.s CHOLMOD
+  Eigen::MatrixXd grad, d = Eigen::MatrixXd::Zero(n, 2);
+  Eigen::VectorXd g(2 * count);
+  double longest_iteration = 0;
+  for (int it = 0; it < options.max_iterations; ++it) {
+    const Clock::time_point iteration_start = Clock::now();
+    // Stop before an iteration that would likely end past the budget.
+    if (std::chrono::duration<double>(iteration_start - start).count() + 1.5 * longest_iteration > options.max_seconds) break;
+    energy(disk, flat, uv, &grad);
+    for (int i = 0; i < n; ++i)
+      if (unknown[size_t(i)] >= 0) g.segment<2>(2 * unknown[size_t(i)]) = grad.row(i).transpose();
+    Eigen::SparseMatrix<double> H = projected_hessian(disk, flat, uv, unknown, count);
+    // A small multiple of the diagonal keeps H positive definite where projection left it singular.
+    for (int r = 0; r < 2 * count; ++r) H.coeffRef(r, r) += 1e-8 * (1 + H.coeff(r, r));
+    if (it == 0) newton.analyzePattern(H);
+    newton.factorize(H);
+    if (newton.info() != Eigen::Success) break;
+    const Eigen::VectorXd step = -newton.solve(g);
+    for (int i = 0; i < n; ++i)
+      if (unknown[size_t(i)] >= 0) d.row(i) = step.segment<2>(2 * unknown[size_t(i)]).transpose();
+    const double slope = g.dot(step);  // < 0: a descent direction
+    if (!(slope < 0)) break;
+    double t = std::min(1.0, 0.9 * largest_safe_step(disk, flat, uv, d));
+    double next = std::numeric_limits<double>::infinity();
+    for (int tries = 0; tries < 40; ++tries, t /= 2) {
+      next = energy(disk, flat, uv + t * d, nullptr);
+      if (next <= e + 1e-4 * t * slope) break;
+    }
+    if (!(next < e)) break;
+    uv += t * d;
+    const double decrease = (e - next) / e;
+    e = next;
+    report.iterations = it + 1;
+    longest_iteration = std::max(longest_iteration, std::chrono::duration<double>(Clock::now() - iteration_start).count());
+    if (decrease < options.relative_decrease) break;
+  }
+  report.energy_after = e;
+  report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return uv;
+}
+
+}  // namespace lowstretch

@@ -1,0 +1,34 @@
+// An optional step after the paper's method: minimizes the L2 stretch energy
+// sum_T A3D(T) sigma(T)^2 directly, boundary fixed, never letting a UV triangle flip or collapse.
+// sigma(T)^2 = |J^-1|_F^2 / 2, with J the 2x2 Jacobian of the map from the triangle (in a plane
+// of its own) to UV, so the energy grows without bound as a triangle collapses: a step that keeps
+// every triangle positive, and lowers the energy, keeps the map valid. Each step is a projected
+// Newton step (per-triangle Hessians with their negative eigenvalues clamped, one CHOLMOD
+// Cholesky factorization with the pattern analysed once), cut to 90% of the largest step that flips no triangle, then
+// backtracked until the energy falls enough (Armijo).
+#pragma once
+#include <Eigen/Core>
+
+#include "disk_mesh.h"
+
+namespace lowstretch {
+
+struct RefineOptions {
+  int max_iterations = 100000;  // the time budget usually ends it first
+  double max_seconds = 10;            // the caller scales it with the time the method took
+  double relative_decrease = 1e-5;    // stop when an iteration lowers the energy by less
+};
+
+struct RefineReport {
+  int iterations = 0;
+  double energy_before = 0, energy_after = 0;  // sum_T A3D sigma^2 (unit-box mesh)
+  double seconds = 0;
+  bool started = false;  // false when uv has a flipped or zero-area triangle: nothing to refine
+};
+
+// uv: n x 2 (compact rows of disk), every triangle positive; boundary rows are kept. Returns
+// the refined map (uv itself when it cannot start).
+Eigen::MatrixXd refine_stretch(const DiskMesh& disk, const Eigen::MatrixXd& uv, const RefineOptions& options,
+                               RefineReport& report);
+
+}  // namespace lowstretch
