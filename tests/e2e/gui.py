@@ -131,6 +131,18 @@ def wait_for_text(path, texts, timeout):
     return None
 
 
+def open_filter_dialog(gui, check, keys):
+    """Walks the menus with `keys` to Filters > Texture > the filter, opens its dialog; returns
+    the dialog's window, or None (with a failed check and a screenshot)."""
+    gui.key(*keys)
+    gui.screenshot("02_filters_texture_menu.png")
+    gui.key("Return")
+    dialog = gui.window(f"^{FILTER}$", timeout=20)
+    if not check(dialog is not None, "Filters > Texture > Low-stretch parameterization opens the filter's dialog"):
+        gui.screenshot("03_no_dialog.png")
+    return dialog
+
+
 def run_2020(args, gui, check):
     """MeshLab 2020.09: Filters > Texture > the filter, Apply; returns 1 when it cannot go on."""
     gui.start_xvfb()
@@ -156,12 +168,8 @@ def run_2020(args, gui, check):
 
     # Filters (Alt+L); Texture is the second last entry (Up from the top wraps to Camera, the
     # last); then down the Texture submenu to the filter.
-    gui.key("alt+l", "Up", "Up", "Right", *["Down"] * index)
-    gui.screenshot("02_filters_texture_menu.png")
-    gui.key("Return")
-    dialog = gui.window(f"^{FILTER}$", timeout=20)
-    if not check(dialog is not None, "Filters > Texture > Low-stretch parameterization opens the filter's dialog"):
-        gui.screenshot("03_no_dialog.png")
+    dialog = open_filter_dialog(gui, check, ["alt+l", "Up", "Up", "Right"] + ["Down"] * index)
+    if dialog is None:
         return 1
     gui.run("xdotool", "windowmove", dialog, "1130", "0")  # beside the main window, not over the mesh
     gui.settle()
@@ -217,12 +225,8 @@ def run_2025(args, gui, check):
 
     # Filters (Alt+L) opens on "Show current filter script" ("Apply filter" is disabled): Up wraps
     # to Other, then Camera, then Texture; with our plugin alone the filter is Texture's only entry.
-    gui.key("alt+l", "Up", "Up", "Up", "Right")
-    gui.screenshot("02_filters_texture_menu.png")
-    gui.key("Return")
-    dialog = gui.window(f"^{FILTER}$", timeout=20)
-    if not check(dialog is not None, "Filters > Texture > Low-stretch parameterization opens the filter's dialog"):
-        gui.screenshot("03_no_dialog.png")
+    dialog = open_filter_dialog(gui, check, ["alt+l", "Up", "Up", "Up", "Right"])
+    if dialog is None:
         return 1
     gui.settle()
     gui.screenshot("03_dialog.png")

@@ -129,7 +129,14 @@ def _read_binary(elements, data, endian):
 def read_obj(path):
     """Vertices and polygonal faces of an OBJ file ('v' and 'f' lines; texcoords, normals, groups
     and materials are ignored). Vertex order is kept: nothing is merged."""
-    vertices, faces = [], []
+    vertices, faces, _ = read_obj_with_texcoords(path)
+    return vertices, faces
+
+
+def read_obj_with_texcoords(path):
+    """Vertices, faces and the (u, v) of every face corner that names one ('f v/vt'; None for a
+    corner that does not), in face order."""
+    vertices, texcoords, faces, corner_uv = [], [], [], []
     with open(path, errors="replace") as f:
         for line in f:
             words = line.split()
@@ -137,10 +144,26 @@ def read_obj(path):
                 continue
             if words[0] == "v":
                 vertices.append(tuple(float(w) for w in words[1:4]))
+            elif words[0] == "vt":
+                try:
+                    texcoords.append((float(words[1]), float(words[2]) if len(words) > 2 else 0.0))
+                except (ValueError, IndexError):
+                    texcoords.append(None)
             elif words[0] == "f":
-                face = [int(w.split("/")[0]) for w in words[1:]]
+                corners = [w.split("/") for w in words[1:]]
+                face = [int(c[0]) for c in corners]
                 faces.append([i - 1 if i > 0 else len(vertices) + i for i in face])
-    return vertices, faces
+                corner_uv.extend(_texcoord(texcoords, c[1] if len(c) > 1 else "") for c in corners)
+    return vertices, faces, corner_uv
+
+
+def _texcoord(texcoords, index):
+    """The (u, v) an OBJ corner names (1-based, or negative from the end), or None."""
+    try:
+        i = int(index)
+        return texcoords[i - 1 if i > 0 else len(texcoords) + i] if i != 0 else None
+    except (ValueError, IndexError):
+        return None
 
 
 def read_off(path):

@@ -21,25 +21,6 @@ from e2e import Checks, rel_diff  # noqa: E402
 from stretch_formula import map_linf, map_stretch  # noqa: E402
 
 
-def read_obj_with_texcoords(path):
-    """Vertices, faces and per-corner (u, v) of an OBJ with f v/vt lines."""
-    vertices, texcoords, faces, corner_uv = [], [], [], []
-    with open(path) as f:
-        for line in f:
-            words = line.split()
-            if not words:
-                continue
-            if words[0] == "v":
-                vertices.append(tuple(float(w) for w in words[1:4]))
-            elif words[0] == "vt":
-                texcoords.append((float(words[1]), float(words[2])))
-            elif words[0] == "f":
-                corners = [w.split("/") for w in words[1:]]
-                faces.append([int(c[0]) - 1 for c in corners])
-                corner_uv.extend(texcoords[int(c[1]) - 1] for c in corners)
-    return vertices, faces, corner_uv
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--tool", required=True)
@@ -58,7 +39,7 @@ def main():
             continue
         layout = json.loads(proc.stdout)["layout"]
         if ext == "obj":
-            vertices, faces, corner_uv = read_obj_with_texcoords(out)
+            vertices, faces, corner_uv = meshio.read_obj_with_texcoords(out)
             quality = None
         else:
             ply = meshio.read_ply(out)
