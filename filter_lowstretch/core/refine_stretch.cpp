@@ -51,6 +51,11 @@ Eigen::Matrix2d jacobian(const FlatTriangle& t, const Eigen::MatrixXd& uv, const
   return J;
 }
 
+double uv_area(const Eigen::MatrixXd& uv, const Eigen::RowVector3i& face) {
+  const Eigen::RowVector2d p1 = uv.row(face(1)) - uv.row(face(0)), p2 = uv.row(face(2)) - uv.row(face(0));
+  return 0.5 * (p1.x() * p2.y() - p1.y() * p2.x());
+}
+
 // Energy A |J|^2 / (2 det^2); infinite when det <= 0. Adds the gradient to `grad` if given.
 double energy(const DiskMesh& disk, const std::vector<FlatTriangle>& flat, const Eigen::MatrixXd& uv,
               Eigen::MatrixXd* grad) {
@@ -58,8 +63,12 @@ double energy(const DiskMesh& disk, const std::vector<FlatTriangle>& flat, const
   if (grad) grad->setZero(uv.rows(), 2);
   for (Eigen::Index f = 0; f < disk.F.rows(); ++f) {
     const FlatTriangle& t = flat[size_t(f)];
-    if (!(t.area > 0)) continue;  // a zero-area 3D triangle carries no stretch
     const Eigen::RowVector3i face = disk.F.row(f);
+    // A zero-area 3D triangle carries no stretch, but its UV triangle must stay positive too.
+    if (!(t.area > 0)) {
+      if (!(uv_area(uv, face) > 0)) return std::numeric_limits<double>::infinity();
+      continue;
+    }
     const Eigen::Matrix2d J = jacobian(t, uv, face);
     const double det = J.determinant();
     if (!(det > 0)) return std::numeric_limits<double>::infinity();
@@ -74,18 +83,16 @@ double energy(const DiskMesh& disk, const std::vector<FlatTriangle>& flat, const
   return total;
 }
 
-// The largest step t along d that keeps every triangle positive (det(J + t K) > 0), capped at 1e9.
-double largest_safe_step(const DiskMesh& disk, const std::vector<FlatTriangle>& flat, const Eigen::MatrixXd& uv,
-                         const Eigen::MatrixXd& d) {
+// The largest step t along d that keeps every UV triangle positive, capped at 1e9: twice the
+// signed area of a triangle moving along d is c + b t + a t^2.
+double largest_safe_step(const DiskMesh& disk, const Eigen::MatrixXd& uv, const Eigen::MatrixXd& d) {
   double largest = 1e9;
   for (Eigen::Index f = 0; f < disk.F.rows(); ++f) {
-    const FlatTriangle& t = flat[size_t(f)];
-    if (!(t.area > 0)) continue;
     const Eigen::RowVector3i face = disk.F.row(f);
-    const Eigen::Matrix2d J = jacobian(t, uv, face), K = jacobian(t, d, face);
-    // det(J + t K) = det J + t (J00 K11 + J11 K00 - J01 K10 - J10 K01) + t^2 det K
-    const double c = J.determinant(), b = J(0, 0) * K(1, 1) + J(1, 1) * K(0, 0) - J(0, 1) * K(1, 0) - J(1, 0) * K(0, 1),
-                 a = K.determinant();
+    const Eigen::RowVector2d p1 = uv.row(face(1)) - uv.row(face(0)), p2 = uv.row(face(2)) - uv.row(face(0));
+    const Eigen::RowVector2d q1 = d.row(face(1)) - d.row(face(0)), q2 = d.row(face(2)) - d.row(face(0));
+    const auto cross = [](const Eigen::RowVector2d& x, const Eigen::RowVector2d& y) { return x.x() * y.y() - x.y() * y.x(); };
+    const double c = cross(p1, p2), b = cross(p1, q2) + cross(q1, p2), a = cross(q1, q2);
     double root = std::numeric_limits<double>::infinity();
     if (std::abs(a) < 1e-300) {
       if (b < 0) root = -c / b;
@@ -189,7 +196,7 @@ Eigen::MatrixXd refine_stretch(const DiskMesh& disk, const Eigen::MatrixXd& uv0,
       if (unknown[size_t(i)] >= 0) d.row(i) = step.segment<2>(2 * unknown[size_t(i)]).transpose();
     const double slope = g.dot(step);  // < 0: a descent direction
     if (!(slope < 0)) break;
-    double t = std::min(1.0, 0.9 * largest_safe_step(disk, flat, uv, d));
+    double t = std::min(1.0, 0.9 * largest_safe_step(disk, uv, d));
     double next = std::numeric_limits<double>::infinity();
     for (int tries = 0; tries < 40; ++tries, t /= 2) {
       next = energy(disk, flat, uv + t * d, nullptr);
