@@ -174,7 +174,7 @@ Eigen::MatrixXd refine_stretch(const DiskMesh& disk, const Eigen::MatrixXd& uv0,
   for (int i = 0; i < n; ++i)
     if (!disk.is_boundary[size_t(i)]) unknown[size_t(i)] = count++;
   if (count == 0) return uv;
-  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> newton;  // SuiteSparse.s CHOLMOD
+  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> newton;  // SuiteSparse's CHOLMOD
   Eigen::MatrixXd grad, d = Eigen::MatrixXd::Zero(n, 2);
   Eigen::VectorXd g(2 * count);
   double last_iteration = 0;  // the first one also analyses the pattern: the next are cheaper
