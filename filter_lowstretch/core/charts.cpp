@@ -54,10 +54,6 @@ double triangle_area(const Eigen::MatrixXd& V, int a, int b, int c) {
   return 0.5 * (q - p).cross(r - p).norm();
 }
 
-double uv_area(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
-  return 0.5 * ((b - a).x() * (c - a).y() - (c - a).x() * (b - a).y());
-}
-
 // One component made into a disk: its faces first (in input order), then the virtual faces
 // that close its holes.
 struct ChartMesh {
@@ -125,7 +121,7 @@ SolvedChart scale_by_area(const ChartMesh& chart, const Result& r) {
   for (size_t j = 0; j < chart.input_face.size(); ++j) {
     const int a = chart.F(Eigen::Index(j), 0), b = chart.F(Eigen::Index(j), 1), c = chart.F(Eigen::Index(j), 2);
     area_3d += triangle_area(chart.V, a, b, c);
-    area_uv += std::abs(uv_area(r.uv.row(a), r.uv.row(b), r.uv.row(c)));
+    area_uv += std::abs(signed_uv_area(r.uv.row(a), r.uv.row(b), r.uv.row(c)));
     for (int v : {a, b, c}) solved.corners.push_back(r.uv.row(v).transpose());
   }
   const double scale = area_uv > 0 && area_3d > 0 ? std::sqrt(area_3d / area_uv) : 1.0;
@@ -330,7 +326,7 @@ void copy_measures(const PassMetrics& from, PassMetrics& to) {
 
 double corner_area(const Eigen::MatrixXd& corner_uv, Eigen::Index f) {
   const auto c = [&](int k) { return Eigen::Vector2d(corner_uv.block(f, 2 * k, 1, 2).transpose()); };
-  return uv_area(c(0), c(1), c(2));
+  return signed_uv_area(c(0), c(1), c(2));
 }
 
 // The layout as MeshLab stores it: inside the gutter, rounded to float, then measured; counts

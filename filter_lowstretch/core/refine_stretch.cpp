@@ -12,6 +12,8 @@
 #include <limits>
 #include <vector>
 
+#include "stretch.h"
+
 namespace lowstretch {
 
 namespace {
@@ -51,11 +53,6 @@ Eigen::Matrix2d jacobian(const FlatTriangle& t, const Eigen::MatrixXd& uv, const
   return J;
 }
 
-double uv_area(const Eigen::MatrixXd& uv, const Eigen::RowVector3i& face) {
-  const Eigen::RowVector2d p1 = uv.row(face(1)) - uv.row(face(0)), p2 = uv.row(face(2)) - uv.row(face(0));
-  return 0.5 * (p1.x() * p2.y() - p1.y() * p2.x());
-}
-
 // Energy A |J|^2 / (2 det^2); infinite when det <= 0. Adds the gradient to `grad` if given.
 double energy(const DiskMesh& disk, const std::vector<FlatTriangle>& flat, const Eigen::MatrixXd& uv,
               Eigen::MatrixXd* grad) {
@@ -66,7 +63,8 @@ double energy(const DiskMesh& disk, const std::vector<FlatTriangle>& flat, const
     const Eigen::RowVector3i face = disk.F.row(f);
     // A zero-area 3D triangle carries no stretch, but its UV triangle must stay positive too.
     if (!(t.area > 0)) {
-      if (!(uv_area(uv, face) > 0)) return std::numeric_limits<double>::infinity();
+      if (!(signed_uv_area(uv.row(face(0)), uv.row(face(1)), uv.row(face(2))) > 0))
+        return std::numeric_limits<double>::infinity();
       continue;
     }
     const Eigen::Matrix2d J = jacobian(t, uv, face);

@@ -20,6 +20,11 @@ struct FaceStretch {
   int flipped = 0, degenerate = 0;
 };
 
+// Signed area of the UV triangle abc, positive when counter-clockwise.
+inline double signed_uv_area(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+  return 0.5 * ((b - a).x() * (c - a).y() - (c - a).x() * (b - a).y());
+}
+
 // V: #V x 3, F: #F x 3, UV: #V x 2.
 FaceStretch face_stretch(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV);
 

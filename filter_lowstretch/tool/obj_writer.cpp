@@ -25,10 +25,11 @@ bool write_file(const std::string& path, const std::string& text) {
   return true;
 }
 
-void append(std::string& text, const char* format, double a, double b, double c = 0, bool three = false) {
+// One printf-formatted line appended to text.
+template <class... Values>
+void append(std::string& text, const char* format, Values... values) {
   char line[128];
-  if (three) std::snprintf(line, sizeof line, format, a, b, c);
-  else std::snprintf(line, sizeof line, format, a, b);
+  std::snprintf(line, sizeof line, format, values...);
   text += line;
 }
 
@@ -43,7 +44,7 @@ bool write_obj(const std::string& path, const ToolMesh& mesh, const std::string&
     if (mesh.vert[i].IsD()) continue;
     index[i] = next++;
     const auto& p = mesh.vert[i].cP();
-    append(text, "v %.17g %.17g %.17g\n", p[0], p[1], p[2], true);
+    append(text, "v %.17g %.17g %.17g\n", double(p[0]), double(p[1]), double(p[2]));
   }
   // One vt per distinct (u, v): the corners of a vertex inside a chart share theirs.
   std::map<std::pair<float, float>, int> vt_of;

@@ -3,15 +3,25 @@ section 2), written once for the Python tests (e2e.py, test_pymeshlab.py)."""
 import math
 
 
-def face_sigma(e1, e2, uv):
-    """Stretch sqrt((a + c) / 2) of a triangle with 3D edge vectors e1 = p2 - p1, e2 = p3 - p1 and
-    texcoords uv = (s1, t1, s2, t2, s3, t3), and its parameter area A_U; inf when A_U <= 0."""
+def derivatives(e1, e2, uv):
+    """The 3D derivatives S_s, S_t of the map of a triangle with 3D edge vectors e1 = p2 - p1,
+    e2 = p3 - p1 and texcoords uv = (s1, t1, s2, t2, s3, t3), and its parameter area A_U; the
+    derivatives are None when A_U <= 0."""
     s1, t1, s2, t2, s3, t3 = uv
     area_u = 0.5 * ((s2 - s1) * (t3 - t1) - (s3 - s1) * (t2 - t1))
     if area_u <= 0:
-        return math.inf, area_u
+        return None, None, area_u
     ss = [(e1[c] * (t3 - t1) - e2[c] * (t2 - t1)) / (2 * area_u) for c in range(3)]
     st = [(e2[c] * (s2 - s1) - e1[c] * (s3 - s1)) / (2 * area_u) for c in range(3)]
+    return ss, st, area_u
+
+
+def face_sigma(e1, e2, uv):
+    """Stretch sqrt((a + c) / 2) of a triangle (arguments as derivatives()) and its parameter area
+    A_U; inf when A_U <= 0."""
+    ss, st, area_u = derivatives(e1, e2, uv)
+    if ss is None:
+        return math.inf, area_u
     return math.sqrt(0.5 * (sum(x * x for x in ss) + sum(x * x for x in st))), area_u
 
 
@@ -46,17 +56,12 @@ def map_linf(vertices, faces, corner_uv):
     worst, area_u_sum, area_sum = 0.0, 0.0, 0.0
     for f, (i, j, k) in enumerate(faces):
         e1, e2, a3 = edges_and_area(vertices[i], vertices[j], vertices[k])
-        s1, t1 = corner_uv[3 * f]
-        s2, t2 = corner_uv[3 * f + 1]
-        s3, t3 = corner_uv[3 * f + 2]
-        area_u = 0.5 * ((s2 - s1) * (t3 - t1) - (s3 - s1) * (t2 - t1))
+        ss, st, area_u = derivatives(e1, e2, (*corner_uv[3 * f], *corner_uv[3 * f + 1], *corner_uv[3 * f + 2]))
         area_u_sum += abs(area_u)
         area_sum += a3
-        if area_u <= 0:
+        if ss is None:
             worst = math.inf
             continue
-        ss = [(e1[c] * (t3 - t1) - e2[c] * (t2 - t1)) / (2 * area_u) for c in range(3)]
-        st = [(e2[c] * (s2 - s1) - e1[c] * (s3 - s1)) / (2 * area_u) for c in range(3)]
         a, b, c = (sum(x * x for x in ss), sum(x * y for x, y in zip(ss, st)), sum(y * y for y in st))
         worst = max(worst, math.sqrt(0.5 * (a + c + math.sqrt((a - c) ** 2 + 4 * b * b))))
     return math.sqrt(area_u_sum / area_sum) * worst
