@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "filter_lowstretch/core/charts.h"
+#include "filter_lowstretch/atlas/charts.h"
 #include "filter_lowstretch/core/error.h"
 #include "filter_lowstretch/core/parameterize.h"
 #include "filter_lowstretch/plugin_common/result_lines.h"

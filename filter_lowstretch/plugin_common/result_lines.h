@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "filter_lowstretch/core/charts.h"
+#include "filter_lowstretch/atlas/charts.h"
 
 namespace lowstretch {
 

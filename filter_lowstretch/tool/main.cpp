@@ -9,7 +9,7 @@
 #include <sstream>
 #include <string>
 
-#include "../core/charts.h"
+#include "../atlas/charts.h"
 #include "../core/parameterize.h"
 #include "../plugin_common/result_lines.h"
 #include "../vcg/mesh_arrays.h"

@@ -7,7 +7,7 @@
 
 #include <vcg/complex/complex.h>
 
-#include "../core/charts.h"
+#include "../atlas/charts.h"
 #include "../core/parameterize.h"
 
 namespace lowstretch {

@@ -9,7 +9,7 @@
 
 #include <vcg/space/rect_packer.h>
 
-#include "../core/charts.h"
+#include "../atlas/charts.h"
 
 namespace lowstretch {
 

@@ -20,7 +20,7 @@
 #include <limits>
 #include <vector>
 
-#include "core/charts.h"
+#include "atlas/charts.h"
 #include "core/parameterize.h"
 #include "generated_meshes.h"
 #include "vcg/pack_charts.h"

@@ -9,7 +9,7 @@
 #include <string>
 #include <unistd.h>
 
-#include "core/charts.h"
+#include "atlas/charts.h"
 #include "core/parameterize.h"
 #include "tool/mesh_io.h"
 #include "vcg/mesh_arrays.h"

@@ -1,4 +1,4 @@
-// Non-disk meshes as charts (core/charts.h packed by vcg/pack_charts.h): every face gets texture
+// Non-disk meshes as charts (atlas/charts.h packed by vcg/pack_charts.h): every face gets texture
 // coordinates inside [0,1]^2 by the gutter, no chart has a flipped or zero-area triangle, no two triangles overlap,
 // and a disk gives exactly what parameterize gives.
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "core/charts.h"
+#include "atlas/charts.h"
 #include "core/stretch.h"
 #include "generated_meshes.h"
 #include "mesh_io.h"

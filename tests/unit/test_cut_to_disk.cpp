@@ -3,12 +3,12 @@
 #include <gtest/gtest.h>
 
 #include "core/boundary_loops.h"
-#include "core/close_holes.h"
-#include "core/cut_graph.h"
-#include "core/cut_mesh.h"
+#include "atlas/close_holes.h"
+#include "atlas/cut_graph.h"
+#include "atlas/cut_mesh.h"
 #include "core/disk_mesh.h"
 #include "core/half_edges.h"
-#include "core/mesh_components.h"
+#include "atlas/mesh_components.h"
 #include "generated_meshes.h"
 
 using namespace lowstretch;

@@ -6,7 +6,7 @@
 // after complex.h, which it needs
 #include <vcg/complex/algorithms/parametrization/distortion.h>
 
-#include "core/charts.h"
+#include "atlas/charts.h"
 #include "core/disk_mesh.h"
 #include "core/parameterize.h"
 #include "core/stretch.h"
