@@ -3,8 +3,11 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <thread>
 
 #include "boundary_loops.h"
 #include "close_holes.h"
@@ -13,6 +16,8 @@
 #include "disk_mesh.h"
 #include "half_edges.h"
 #include "mesh_components.h"
+#include "rectangle_layout.h"
+#include "split_chart.h"
 #include "stretch.h"
 
 namespace lowstretch {
@@ -21,6 +26,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 const double kInf = std::numeric_limits<double>::infinity();
+int kPayCheckFaces = std::getenv("PAY") ? std::atoi(std::getenv("PAY")) : 400;
 
 // The problems that charts solve; anything else (non-manifold, non-orientable, bad indices or
 // coordinates) stays an error.
@@ -47,11 +53,6 @@ Eigen::MatrixXd unit_box_of_used(const Eigen::MatrixXd& V, const Eigen::MatrixXi
   Eigen::MatrixXd scaled = Eigen::MatrixXd::Zero(V.rows(), 3);
   for (int r : rows) scaled.row(r) = box.map(V.row(r));
   return scaled;
-}
-
-double triangle_area(const Eigen::MatrixXd& V, int a, int b, int c) {
-  const Eigen::Vector3d p = V.row(a), q = V.row(b), r = V.row(c);
-  return 0.5 * (q - p).cross(r - p).norm();
 }
 
 // One component made into a disk: its faces first (in input order), then the virtual faces
@@ -109,34 +110,12 @@ Error make_chart_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
   return {};
 }
 
-// A solved chart, scaled so that its UV area equals its 3D area (uniform texel density).
-struct SolvedChart {
-  std::vector<Eigen::Vector2d> corners;  // 3 per real face
-  Eigen::AlignedBox2d box;
-};
-
-SolvedChart scale_by_area(const ChartMesh& chart, const Result& r) {
-  SolvedChart solved;
-  double area_3d = 0, area_uv = 0;
-  for (size_t j = 0; j < chart.input_face.size(); ++j) {
-    const int a = chart.F(Eigen::Index(j), 0), b = chart.F(Eigen::Index(j), 1), c = chart.F(Eigen::Index(j), 2);
-    area_3d += triangle_area(chart.V, a, b, c);
-    area_uv += std::abs(signed_uv_area(r.uv.row(a), r.uv.row(b), r.uv.row(c)));
-    for (int v : {a, b, c}) solved.corners.push_back(r.uv.row(v).transpose());
-  }
-  const double scale = area_uv > 0 && area_3d > 0 ? std::sqrt(area_3d / area_uv) : 1.0;
-  for (Eigen::Vector2d& p : solved.corners) {
-    p *= scale;
-    solved.box.extend(p);
-  }
-  return solved;
-}
-
 // One pass of one chart, over its real faces (the faces closing holes are not the mesh's).
 struct ChartPass {
   double area_3d = 0, l2_stretch = 0;
   int flipped = 0, degenerate = 0;
 };
+ChartPass as_chart_pass(const PassMetrics& p) { return {0, p.l2_stretch, p.flipped, p.degenerate}; }
 ChartPass measure_real_faces(const ChartMesh& chart, const Eigen::MatrixXd& uv) {
   const Eigen::Index real = Eigen::Index(chart.input_face.size());
   const FaceStretch s = face_stretch(chart.V, chart.F.topRows(real), uv);
@@ -165,7 +144,10 @@ std::vector<LayoutPass> layout_passes(const std::vector<std::vector<ChartPass>>&
   return layout;
 }
 
-Error check_texture_options(const ChartOptions& o) {
+Error check_chart_options(const ChartOptions& o) {
+  if (!(o.max_stretch >= 1 && o.max_stretch < 1e6))
+    return {ErrorCode::InvalidOption, 0, "must be at least 1, got " + number_text(o.max_stretch), "max_stretch"};
+  if (o.max_charts < 1) return {ErrorCode::InvalidOption, 0, "must be at least 1, got " + std::to_string(o.max_charts), "max_charts"};
   if (o.texture_size < 8 || o.texture_size > 65536)
     return {ErrorCode::InvalidOption, 0, "must be from 8 to 65536, got " + std::to_string(o.texture_size), "texture_size"};
   if (!(o.gutter >= 0.5 && o.gutter <= o.texture_size / 8.0))
@@ -209,70 +191,191 @@ ChartsResult from_disk(const Eigen::MatrixXi& F, Result disk) {
   return result;
 }
 
-// Every component as a chart: its mesh (holes closed, cut open), the method on it, every pass
-// measured over its real faces; fills result.charts, seam_length, notes and passes.
-Error solve_charts(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, double unit,
-                   const std::vector<std::vector<int>>& faces_of, const Options& disk_options,
-                   std::vector<SolvedChart>& solved, ChartsResult& result) {
-  const int count = int(faces_of.size());
-  std::vector<int> local_of(static_cast<size_t>(unit_V.rows()), -1);
-  std::vector<std::vector<ChartPass>> chart_passes(static_cast<size_t>(count));
-  std::vector<int> kept;
-  for (int c = 0; c < count; ++c) {
-    ChartMesh mesh;
-    if (Error e = make_chart_mesh(unit_V, F, faces_of[size_t(c)], local_of, mesh)) return e;
-    Options chart_options = disk_options;
-    if (disk_options.progress)
-      chart_options.progress = [&disk_options, c, count](double fraction, const char* stage) {
-        return disk_options.progress((c + fraction) / (count + 0.1), stage);
-      };
-    std::vector<ChartPass>& passes = chart_passes[size_t(c)];
-    chart_options.pass_uv = [&mesh, &passes](int, const Eigen::MatrixXd& uv) { passes.push_back(measure_real_faces(mesh, uv)); };
-    const Result r = parameterize(mesh.V, mesh.F, chart_options);
-    if (r.error) return r.error;
-    kept.push_back(r.chosen_pass);
-    solved.push_back(scale_by_area(mesh, r));
-    Chart chart;
-    chart.faces = int(mesh.input_face.size());
-    chart.closed_holes = mesh.closed_holes;
-    chart.seam_length = mesh.seam_length * unit;
-    chart.chosen_pass = r.chosen_pass;
-    chart.passes = int(r.passes.size());
-    result.charts.push_back(chart);
-    result.seam_length += chart.seam_length;
-    for (const std::string& note : r.notes) result.notes.push_back("chart " + std::to_string(c) + ": " + note);
+// One chart: its mesh, the method's map of it onto a rectangle and that map's passes measured
+// over the real faces.
+struct SolvedChart {
+  std::vector<int> faces;  // input faces
+  ChartMesh mesh;
+  Result map;
+  std::vector<ChartPass> passes;
+  ChartPass kept;          // passes[map.chosen_pass]
+  double aspect = 1;       // of the rectangle it is mapped onto, width / height
+};
+
+bool needs_split(const ChartPass& p, double max_stretch) {
+  return p.flipped + p.degenerate > 0 || !(p.l2_stretch <= max_stretch);
+}
+
+// The method on a chart whose mesh is built, onto a rectangle of `aspect` (0: its own).
+void solve(SolvedChart& chart, Options options, double aspect) {
+  options.boundary = BoundaryShape::Square;
+  options.rectangle_aspect = aspect;
+  options.corners_at_turns = true;
+  options.progress = nullptr;  // called from worker threads: the caller reports between rounds
+  chart.passes.clear();
+  options.pass_uv = [&chart](int, const Eigen::MatrixXd& uv) { chart.passes.push_back(measure_real_faces(chart.mesh, uv)); };
+  chart.map = parameterize(chart.mesh.V, chart.mesh.F, options);
+  if (chart.map.error) return;
+  chart.kept = chart.passes.at(size_t(chart.map.chosen_pass));
+  Eigen::AlignedBox2d box;
+  for (size_t j = 0; j < chart.faces.size(); ++j)
+    for (int k = 0; k < 3; ++k) box.extend(chart.map.uv.row(chart.mesh.F(Eigen::Index(j), k)).transpose());
+  chart.aspect = box.sizes().y() > 0 ? box.sizes().x() / box.sizes().y() : 1;
+}
+
+// Runs job(i) for i < count on up to `threads` threads, each taking every threads-th index, so
+// that which thread computes what never depends on timing.
+void for_each_index(int count, const std::function<void(int)>& job) {
+  const int threads = std::max(1, std::min<int>(int(std::thread::hardware_concurrency()), std::min(count, 8)));
+  std::vector<std::thread> workers;
+  for (int t = 1; t < threads; ++t)
+    workers.emplace_back([&, t] {
+      for (int i = t; i < count; i += threads) job(i);
+    });
+  for (int i = 0; i < count; i += threads) job(i);
+  for (std::thread& w : workers) w.join();
+}
+
+// The L2 stretch of charts laid out at one texel density: L2^2 is their area-weighted mean.
+double combined_stretch(const std::vector<SolvedChart>& charts, size_t first, size_t end) {
+  double weighted = 0, area = 0;
+  for (size_t i = first; i < end; ++i) {
+    if (charts[i].kept.flipped + charts[i].kept.degenerate > 0) return kInf;
+    weighted += charts[i].kept.area_3d * charts[i].kept.l2_stretch * charts[i].kept.l2_stretch;
+    area += charts[i].kept.area_3d;
   }
-  result.passes = layout_passes(chart_passes, kept);
+  return area > 0 ? std::sqrt(weighted / area) : kInf;
+}
+
+// The parts of a chart, each with its mesh built; empty if the chart cannot be cut into parts
+// that are disks with holes (a part whose faces meet at a single vertex).
+std::vector<SolvedChart> cut_chart(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const std::vector<int>& twin,
+                                   const SolvedChart& chart, std::vector<int>& local_of) {
+  std::vector<SolvedChart> parts;
+  for (std::vector<int>& faces : split_chart(unit_V, F, twin, chart.faces)) {
+    parts.emplace_back();
+    parts.back().faces = std::move(faces);
+    if (make_chart_mesh(unit_V, F, parts.back().faces, local_of, parts.back().mesh)) return {};
+  }
+  if (parts.size() < 2) return {};
+  return parts;
+}
+
+// Cuts the charts that stretch too much and maps the parts again, round after round. A cut must
+// pay: if its parts together stretch nearly as much as the chart (rectangles fit small, coarse
+// parts badly), the chart stays whole. Stops at the chart limit.
+Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, std::vector<std::vector<int>> components,
+                          const ChartOptions& options, std::vector<SolvedChart>& accepted, std::vector<std::string>& notes) {
+  const std::vector<int> twin = opposite_half_edges(F);
+  std::vector<int> local_of(static_cast<size_t>(unit_V.rows()), -1);
+  // round: the charts to map now; parent_of[i]: the chart they were cut from (index into
+  // parents), -1 for components.
+  std::vector<SolvedChart> round, parents;
+  std::vector<int> parent_of;
+  for (std::vector<int>& faces : components) {
+    round.emplace_back();
+    if (Error e = make_chart_mesh(unit_V, F, faces, local_of, round.back().mesh)) return e;
+    round.back().faces = std::move(faces);
+    parent_of.push_back(-1);
+  }
+  int charts = int(round.size()), faces_done = 0;
+  bool limit_reached = false;
+  while (!round.empty()) {
+    for_each_index(int(round.size()), [&](int i) { solve(round[size_t(i)], options.disk, 0); });
+    std::vector<SolvedChart> next, next_parents;
+    std::vector<int> next_parent_of;
+    for (size_t first = 0, end = 0; first < round.size(); first = end) {
+      for (end = first + 1; end < round.size() && parent_of[end] >= 0 && parent_of[end] == parent_of[first];) ++end;
+      for (size_t i = first; i < end; ++i)
+        if (round[i].map.error) return round[i].map.error;
+      if (parent_of[first] >= 0 && int(parents[size_t(parent_of[first])].faces.size()) < kPayCheckFaces) {
+        // the parts of a small chart: keep the chart if cutting did not pay
+        SolvedChart& parent = parents[size_t(parent_of[first])];
+        const double before = combined_stretch(parents, size_t(parent_of[first]), size_t(parent_of[first]) + 1);
+        if (!(combined_stretch(round, first, end) < before)) {
+          charts -= int(end - first) - 1;
+          faces_done += int(parent.faces.size());
+          accepted.push_back(std::move(parent));
+          continue;
+        }
+      }
+      for (size_t i = first; i < end; ++i) {
+        SolvedChart& chart = round[i];
+        std::vector<SolvedChart> parts;
+        if (needs_split(chart.kept, options.max_stretch) && int(chart.faces.size()) >= 2 * kSmallestChart) {
+          if (charts < options.max_charts) parts = cut_chart(unit_V, F, twin, chart, local_of);
+          else limit_reached = true;
+        }
+        if (parts.empty()) {
+          faces_done += int(chart.faces.size());
+          accepted.push_back(std::move(chart));
+          continue;
+        }
+        charts += int(parts.size()) - 1;
+        for (SolvedChart& part : parts) {
+          next.push_back(std::move(part));
+          next_parent_of.push_back(int(next_parents.size()));
+        }
+        next_parents.push_back(std::move(chart));
+      }
+    }
+    round = std::move(next);
+    parents = std::move(next_parents);
+    parent_of = std::move(next_parent_of);
+    if (options.disk.progress && !options.disk.progress(0.9 * faces_done / double(F.rows()), "charts"))
+      return {ErrorCode::Cancelled, 0, ""};
+  }
+  if (limit_reached)
+    notes.push_back("the chart limit (" + std::to_string(options.max_charts) + ") stopped the splitting");
   return {};
 }
 
-// Packs the charts' boxes, places every corner, then moves and scales the whole layout uniformly
-// into [0,1]^2; fills result.corner_uv and face_chart.
-Error lay_out(std::vector<SolvedChart>& solved, const std::vector<std::vector<int>>& faces_of, Eigen::Index face_count,
-              const ChartPacker& pack, ChartsResult& result) {
-  std::vector<Eigen::AlignedBox2d> boxes;
-  for (const SolvedChart& s : solved) boxes.push_back(s.box);
-  std::vector<ChartPlacement> placements;
-  if (!pack(boxes, placements) || placements.size() != boxes.size())
-    return {ErrorCode::ChartsNotPacked, static_cast<long long>(boxes.size()), ""};
-  Eigen::AlignedBox2d layout_box;
-  for (size_t c = 0; c < solved.size(); ++c)
-    for (Eigen::Vector2d& p : solved[c].corners) {
-      p = placements[c].scale * p + placements[c].offset;
-      layout_box.extend(p);
-    }
-  const double side = layout_box.sizes().maxCoeff();
+// Every chart onto its cell of the tiling: mapped again onto a rectangle of the cell's shape
+// (turned a quarter if the chart is wider the other way), then fitted into the cell less half
+// the gutter on each side. Fills corner_uv and face_chart.
+Error lay_out(std::vector<SolvedChart>& charts, const ChartOptions& options, Eigen::Index face_count, ChartsResult& result) {
+  // Every cell at least a few texels wide inside its gutter, whatever its chart's area.
+  double total = 0;
+  for (const SolvedChart& c : charts) total += c.kept.area_3d;
+  const double texels = 2 * options.gutter + 4, least = total * texels * texels / (double(options.texture_size) * options.texture_size);
+  std::vector<double> areas;
+  for (const SolvedChart& c : charts) areas.push_back(std::max({c.kept.area_3d, least, 1e-300}));
+  const std::vector<Eigen::AlignedBox2d> cells = slice_unit_square(areas);
+  std::vector<char> turned(charts.size(), 0);
+  for_each_index(int(charts.size()), [&](int i) {
+    SolvedChart& c = charts[size_t(i)];
+    const double cell = cells[size_t(i)].sizes().x() / cells[size_t(i)].sizes().y();
+    turned[size_t(i)] = std::abs(std::log(c.aspect * cell)) < std::abs(std::log(c.aspect / cell));
+    const double wanted = std::min(64.0, std::max(1.0 / 64, turned[size_t(i)] ? 1 / cell : cell));
+    if (std::abs(std::log(wanted / c.aspect)) > 0.02) solve(c, options.disk, wanted);
+  });
+  // Half the gutter around every cell, in [0,1]^2 before store() moves it into [g, 1 - g]^2.
+  const double g = options.gutter / options.texture_size, inset = 0.5 * g / (1 - 2 * g);
   result.corner_uv.resize(face_count, 6);
   result.face_chart.assign(size_t(face_count), 0);
-  for (size_t c = 0; c < solved.size(); ++c)
-    for (size_t j = 0; j < faces_of[c].size(); ++j) {
-      const int f = faces_of[c][j];
+  for (size_t c = 0; c < charts.size(); ++c) {
+    if (charts[c].map.error) return charts[c].map.error;
+    const ChartMesh& mesh = charts[c].mesh;
+    const Eigen::MatrixXd& uv = charts[c].map.uv;
+    Eigen::AlignedBox2d box;
+    for (size_t j = 0; j < charts[c].faces.size(); ++j)
+      for (int k = 0; k < 3; ++k) box.extend(uv.row(mesh.F(Eigen::Index(j), k)).transpose());
+    Eigen::AlignedBox2d target = cells[c];
+    target.min().array() += inset;
+    target.max().array() -= inset;
+    if (!(target.sizes().minCoeff() > 0) || !(box.sizes().minCoeff() > 0))
+      return {ErrorCode::ChartsNotPacked, static_cast<long long>(charts.size()), ""};
+    for (size_t j = 0; j < charts[c].faces.size(); ++j) {
+      const int f = charts[c].faces[j];
       result.face_chart[size_t(f)] = int(c);
       for (int k = 0; k < 3; ++k) {
-        const Eigen::Vector2d p = (solved[c].corners[3 * j + size_t(k)] - layout_box.min()) / (side > 0 ? side : 1);
-        result.corner_uv.block(f, 2 * k, 1, 2) = p.cwiseMax(0.0).cwiseMin(1.0).transpose();
+        Eigen::Vector2d p = ((uv.row(mesh.F(Eigen::Index(j), k)).transpose() - box.min()).array() / box.sizes().array()).matrix();
+        if (turned[c]) p = Eigen::Vector2d(1 - p.y(), p.x());  // a quarter turn counter-clockwise
+        p = target.min() + p.cwiseProduct(target.sizes());
+        result.corner_uv.block(f, 2 * k, 1, 2) = p.transpose();
       }
     }
+  }
   return {};
 }
 
@@ -310,7 +413,28 @@ void measure_layout(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, int
     for (int k = 0; k < 3; ++k) used[size_t(F(f, k))] = 1;
   for (int v = 0; v < vertex_rows; ++v)
     if (!used[size_t(v)]) result.vertex_stretch(v) = 0;
-  for (size_t c = 0; c < faces_of.size(); ++c) result.charts[c].l2_stretch = l2_stretch(s, faces_of[c]);
+  for (size_t c = 0; c < faces_of.size(); ++c) {
+    double area_3d = 0, area_uv = 0, linf = 0;
+    for (int f : faces_of[c]) {
+      area_3d += s.area_3d(f);
+      area_uv += std::abs(s.area_uv(f));
+      linf = std::max(linf, s.valid(f) ? s.gamma(f) : kInf);
+    }
+    result.charts[c].l2_stretch = l2_stretch(s, faces_of[c]);
+    result.charts[c].linf_stretch = area_3d > 0 ? std::sqrt(area_uv / area_3d) * linf : kInf;
+  }
+}
+
+// 3D length of the edges whose two faces are in different charts.
+double length_between_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const std::vector<int>& face_chart) {
+  const std::vector<int> twin = opposite_half_edges(F);
+  double length = 0;
+  for (int h = 0; h < int(twin.size()); ++h) {
+    const int t = twin[size_t(h)];
+    if (t > h && face_chart[size_t(h / 3)] != face_chart[size_t(t / 3)])
+      length += (V.row(half_edge_tail(F, h)) - V.row(half_edge_head(F, h))).norm();
+  }
+  return length;
 }
 
 // The measures of `from` (stretch, distortions, flips) into `to`, whose pass and timings stay.
@@ -353,12 +477,13 @@ void store(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, int vertex_r
 
 }  // namespace
 
-ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options,
-                                 const ChartPacker& pack) {
+ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options) {
   const Clock::time_point start = Clock::now();
-  if (Error e = check_texture_options(options)) return failed(e);
+  if (Error e = check_chart_options(options)) return failed(e);
   Result whole = parameterize(V, F, options.disk);
-  if (!whole.error) {
+  const bool split_disk = !whole.error && options.non_disk == NonDisk::Atlas &&
+                          needs_split(as_chart_pass(whole.passes.at(size_t(whole.chosen_pass))), options.max_stretch);
+  if (!whole.error && !split_disk) {
     ChartsResult result = from_disk(F, std::move(whole));
     double unit = 1;
     std::vector<int> all(static_cast<size_t>(F.rows()));
@@ -371,8 +496,7 @@ ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi
     result.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
     return result;
   }
-  if (options.non_disk == NonDisk::Reject || !charts_can_fix(whole.error.code)) return failed(whole.error);
-  if (!pack) return failed({ErrorCode::InvalidOption, 0, "charts need a packer"});
+  if (!split_disk && (options.non_disk == NonDisk::Reject || !charts_can_fix(whole.error.code))) return failed(whole.error);
 
   // parameterize checked indices, coordinates, edges and orientation of the whole mesh before it
   // found the topology wrong; vertex fans are checked per component and between components.
@@ -380,16 +504,48 @@ ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi
   const std::vector<int> component = face_components(F, count);
   if (const int shared = vertices_shared_by_components(F, int(V.rows()), component))
     return failed({ErrorCode::NonManifoldVertices, shared, ""});
-  std::vector<std::vector<int>> faces_of(static_cast<size_t>(count));
-  for (Eigen::Index f = 0; f < F.rows(); ++f) faces_of[size_t(component[size_t(f)])].push_back(int(f));
+  std::vector<std::vector<int>> components(static_cast<size_t>(count));
+  for (Eigen::Index f = 0; f < F.rows(); ++f) components[size_t(component[size_t(f)])].push_back(int(f));
 
   double unit = 1;
   const Eigen::MatrixXd unit_V = unit_box_of_used(V, F, unit);
   ChartsResult result;
-  std::vector<SolvedChart> solved;
-  if (Error e = solve_charts(unit_V, F, unit, faces_of, options.disk, solved, result)) return failed(e);
-  if (Error e = lay_out(solved, faces_of, F.rows(), pack, result)) return failed(e);
+  if (options.disk.boundary != BoundaryShape::Square)
+    result.notes.push_back("an atlas maps every chart onto a rectangle: the boundary option applies to disks only");
+  std::vector<SolvedChart> charts;
+  if (Error e = split_until_bounded(unit_V, F, std::move(components), options, charts, result.notes)) return failed(e);
+  if (Error e = lay_out(charts, options, F.rows(), result)) return failed(e);
+  std::vector<std::vector<int>> faces_of;
+  std::vector<std::vector<ChartPass>> passes;
+  std::vector<int> kept;
+  for (const SolvedChart& c : charts) {
+    Chart chart;
+    chart.faces = int(c.faces.size());
+    chart.closed_holes = c.mesh.closed_holes;
+    chart.seam_length = c.mesh.seam_length * unit;
+    chart.chosen_pass = c.map.chosen_pass;
+    chart.passes = int(c.map.passes.size());
+    result.charts.push_back(chart);
+    result.seam_length += chart.seam_length;
+    for (const std::string& note : c.map.notes)
+      result.notes.push_back("chart " + std::to_string(faces_of.size()) + ": " + note);
+    faces_of.push_back(c.faces);
+    passes.push_back(c.passes);
+    kept.push_back(c.map.chosen_pass);
+  }
+  result.passes = layout_passes(passes, kept);
+  result.seam_length += unit * length_between_charts(unit_V, F, result.face_chart);
   store(unit_V, F, int(V.rows()), faces_of, options, result);
+  for (size_t c = 0; c < result.charts.size(); ++c) {
+    Chart& chart = result.charts[c];
+    chart.above_bound = !(chart.l2_stretch <= options.max_stretch);
+    if (chart.above_bound)
+      result.notes.push_back("chart " + std::to_string(c) + " (" + std::to_string(chart.faces) + " faces) keeps L2 stretch " +
+                             number_text(chart.l2_stretch) + " above " + number_text(options.max_stretch) + ": " +
+                             (chart.faces < 2 * kSmallestChart ? "too few faces to cut"
+                              : int(result.charts.size()) >= options.max_charts ? "the chart limit is reached"
+                                                                               : "no cut into disks lowered it"));
+  }
   result.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
   result.layout.seconds = result.seconds_total;
   return result;
@@ -399,6 +555,7 @@ const char* to_string(NonDisk non_disk) {
   switch (non_disk) {
     case NonDisk::Reject: return "reject";
     case NonDisk::Charts: return "charts";
+    case NonDisk::Atlas: return "atlas";
   }
   return "?";
 }

@@ -1,6 +1,8 @@
-// Parameterizing meshes that are not disks: every connected component becomes a disk chart
+// A low-stretch atlas of any manifold mesh: every connected component becomes a disk chart
 // (holes closed virtually, closed or higher-genus parts cut open along short seams), each chart
-// gets the same low-stretch map as a disk, and the charts are packed into the unit square.
+// gets the paper's low-stretch map onto a rectangle, a chart that stretches more than a bound is
+// cut in two (split_chart.h) and mapped again, and the rectangles tile the unit square
+// (rectangle_layout.h).
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -12,7 +14,10 @@
 
 namespace lowstretch {
 
-enum class NonDisk { Reject, Charts };
+// What to do with a mesh: Reject a mesh that is not a disk; make an atlas of a mesh that is not
+// a disk (Charts; a disk keeps the paper's single chart); make an atlas of any mesh (Atlas: a
+// disk whose map meets max_stretch stays that one chart).
+enum class NonDisk { Reject, Charts, Atlas };
 
 struct ChartOptions {
   Options disk;                        // the method, for the whole disk or for each chart
@@ -22,22 +27,21 @@ struct ChartOptions {
   // (UV exactly 0 or 1 would give texel -1 or `texture_size`).
   int texture_size = 1024;             // texels per side, 8 to 65536
   double gutter = 2;                   // in texels, from 0.5 to an eighth of texture_size
+                                       // (between charts too)
+  // A chart whose L2 stretch is above max_stretch, or that has a flipped or zero-area triangle,
+  // is cut in two, until max_charts; charts of fewer than 2 x kSmallestChart faces stay whole.
+  double max_stretch = 1.15;           // at least 1
+  int max_charts = 1000;               // at least 1
 };
-
-// Where the packer puts one chart: uv -> scale * uv + offset. The packer must give every chart
-// the same scale (uniform texel density) and disjoint boxes.
-struct ChartPlacement {
-  double scale = 1;
-  Eigen::Vector2d offset = Eigen::Vector2d::Zero();
-};
-// Places the charts' bounding boxes without overlap; returns false if it cannot.
-using ChartPacker = std::function<bool(const std::vector<Eigen::AlignedBox2d>& boxes, std::vector<ChartPlacement>& placements)>;
+constexpr int kSmallestChart = 50;
 
 struct Chart {
   int faces = 0;
   int closed_holes = 0;     // holes filled virtually for the solve
   double seam_length = 0;   // 3D length of the seams cut in this chart, in the input's units
   double l2_stretch = 0;    // normalized L2 stretch of this chart alone in the final layout
+  double linf_stretch = 0;  // its largest triangle stretch, normalized the same way
+  bool above_bound = false; // l2_stretch > max_stretch or invalid triangles (a note says why)
   int chosen_pass = 0, passes = 0;
 };
 
@@ -76,11 +80,11 @@ struct ChartsResult {
   std::vector<std::string> notes;
 };
 
-// A disk gives parameterize's result (one chart, the same UV). Any other mesh gives
-// parameterize's error unless options.non_disk is Charts and the only problems are several
-// components, holes, no boundary or genus; non-manifold or non-orientable input stays an error.
-ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options,
-                                 const ChartPacker& pack);
+// A disk gives parameterize's result (one chart, the same UV), and with NonDisk::Atlas too
+// when it meets max_stretch. Any other mesh gives parameterize's error unless options.non_disk
+// makes charts and the only problems are several components, holes, no boundary or genus;
+// non-manifold or non-orientable input stays an error.
+ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options);
 
 const char* to_string(NonDisk non_disk);
 

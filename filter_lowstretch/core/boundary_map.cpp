@@ -50,17 +50,24 @@ double bulge(double t, const std::vector<double>& kink_t) {
 
 }  // namespace
 
-Eigen::MatrixXd square_boundary(const DiskMesh& disk, const std::array<int, 4>& corners, const std::vector<int>& kinks) {
-  static const double corner_uv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+Eigen::MatrixXd square_boundary(const DiskMesh& disk, const std::array<int, 4>& corners, const std::vector<int>& kinks,
+                                double aspect) {
   static const double outward[4][2] = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
   const std::vector<double> arc = boundary_arc_lengths(disk);
   const int n = int(disk.boundary.size());
+  const auto arc_at = [&](int i) { return i < n ? arc[size_t(i)] : arc[size_t(i - n)] + arc[size_t(n)]; };
+  const auto side_from = [&](int side) { return corners[size_t(side)]; };
+  const auto side_to = [&](int side) { return side < 3 ? corners[size_t(side) + 1] : corners[0] + n; };
+  if (aspect == 0) {  // sides 0 and 2 run along u, 1 and 3 along v
+    const auto length = [&](int side) { return arc_at(side_to(side)) - arc_at(side_from(side)); };
+    const double along_u = length(0) + length(2), along_v = length(1) + length(3);
+    aspect = along_u > 0 && along_v > 0 ? std::min(64.0, std::max(1.0 / 64, along_u / along_v)) : 1.0;
+  }
+  const double corner_uv[4][2] = {{0, 0}, {aspect, 0}, {aspect, 1}, {0, 1}};
   Eigen::MatrixXd uv(n, 2);
   for (int side = 0; side < 4; ++side) {
-    const int from = corners[size_t(side)];
-    const int to = side < 3 ? corners[size_t(side) + 1] : corners[0] + n;
-    const auto arc_at = [&](int i) { return i < n ? arc[size_t(i)] : arc[size_t(i - n)] + arc[size_t(n)]; };
-    const double span = arc_at(to) - arc_at(from);
+    const int from = side_from(side), to = side_to(side);
+    const double span = arc_at(to) - arc_at(from), side_length = side % 2 == 0 ? aspect : 1.0;
     const auto t_of = [&](int i) { return span > 0 ? (arc_at(i) - arc_at(from)) / span : 0.0; };
     std::vector<double> kink_t;
     for (int k : kinks) {
@@ -68,7 +75,7 @@ Eigen::MatrixXd square_boundary(const DiskMesh& disk, const std::array<int, 4>& 
       if (unrolled > from && unrolled < to) kink_t.push_back(t_of(unrolled));
     }
     for (int i = from; i < to; ++i) {
-      const double t = t_of(i), b = bulge(t, kink_t);
+      const double t = t_of(i), b = side_length * bulge(t, kink_t);
       const double* a = corner_uv[side];
       const double* c = corner_uv[(side + 1) % 4];
       uv(i % n, 0) = a[0] + t * (c[0] - a[0]) + b * outward[side][0];

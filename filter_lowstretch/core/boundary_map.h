@@ -17,12 +17,14 @@ Eigen::MatrixXd circle_boundary(const DiskMesh& disk);
 
 // Boundary loop on the unit square with the loop positions `corners` (increasing) at the
 // corners (0,0), (1,0), (1,1), (0,1); the points between two corners spaced by arc length.
+// With `aspect` != 1 the square is a rectangle of that width / height, and with aspect 0 the
+// rectangle whose sides are as long as the arcs between corners (mean of opposite sides).
 // A side that holds loop positions of `kinks` bulges outward, by at most kKinkBulge of its
 // length, as a concave polyline that bends at each of them: every interior edge joining two
 // points of that side with a kink strictly between them then spans a triangle of positive area
 // (the domain stays convex). The whole is fitted back into [0,1]^2.
 Eigen::MatrixXd square_boundary(const DiskMesh& disk, const std::array<int, 4>& corners,
-                                const std::vector<int>& kinks = {});
+                                const std::vector<int>& kinks = {}, double aspect = 1);
 // 0.8%: the square map then covers 0.98 of the texture with the default gutter on every shared
 // disk; less bulge makes the triangles at the kinks thinner (0.5% raised L2 on one disk from 1.44
 // to 1.69).

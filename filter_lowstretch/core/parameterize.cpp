@@ -29,6 +29,9 @@ Error check_options(const Options& o) {
   if (o.max_passes < 0 || o.max_passes > kMostPasses)
     return {ErrorCode::InvalidOption, 0, "must be from 0 to " + std::to_string(kMostPasses) + ", got " +
                                              std::to_string(o.max_passes), "max_passes"};
+  if (!(o.rectangle_aspect == 0 || (o.rectangle_aspect >= 1.0 / 64 && o.rectangle_aspect <= 64)))
+    return {ErrorCode::InvalidOption, 0, "must be 0 (natural) or from 1/64 to 64, got " + number_text(o.rectangle_aspect),
+            "rectangle_aspect"};
   const SolverOptions& s = o.solver;
   if (!(s.tolerance > 0 && s.tolerance < 1 && s.residual_accepted >= s.tolerance && s.max_iterations > 0 &&
         s.amg_minimum_rows >= 1))
@@ -43,20 +46,20 @@ std::pair<int, double> rank(const FaceStretch& s) {
   return {s.flipped + s.degenerate, l2_stretch(s, true)};
 }
 
-Error boundary_positions(const DiskMesh& disk, BoundaryShape shape, Eigen::MatrixXd& boundary_uv,
+Error boundary_positions(const DiskMesh& disk, const Options& options, Eigen::MatrixXd& boundary_uv,
                          std::vector<std::string>& notes) {
-  switch (shape) {
+  switch (options.boundary) {
     case BoundaryShape::Circle: boundary_uv = circle_boundary(disk); return {};
     case BoundaryShape::Natural: return natural_boundary(disk, boundary_uv);
     case BoundaryShape::Square: {
-      const SquareCorners corners = choose_square_corners(disk);
+      const SquareCorners corners = choose_square_corners(disk, options.corners_at_turns);
       if (corners.moved)
         notes.push_back("square corners moved off the quarter arc lengths so that no boundary triangle collapses");
       if (corners.collapsed_chords > 0)
         notes.push_back(std::to_string(corners.collapsed_chords) +
                         " interior edges join two boundary vertices of one square side whatever the corners: "
                         "those sides bend outward slightly (at most 0.8% of their length) so that no triangle collapses");
-      boundary_uv = square_boundary(disk, corners.corners, corners.kinks);
+      boundary_uv = square_boundary(disk, corners.corners, corners.kinks, options.rectangle_aspect);
       return {};
     }
   }
@@ -160,7 +163,7 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
   if (Error e = make_disk_mesh(V, F, disk)) return failed(e);
   if (!report(0.02, "boundary")) return failed({ErrorCode::Cancelled, 0, ""});
   Eigen::MatrixXd boundary_uv;
-  if (Error e = boundary_positions(disk, options.boundary, boundary_uv, result.notes)) return failed(e);
+  if (Error e = boundary_positions(disk, options, boundary_uv, result.notes)) return failed(e);
 
   int fallbacks = 0;
   std::vector<double> weights = initial_weights(disk, options.weights, fallbacks);

@@ -17,6 +17,10 @@ constexpr int kMostPasses = 1000;
 
 struct Options {
   BoundaryShape boundary = BoundaryShape::Square;
+  // The square boundary as a rectangle, width / height (1: the square); 0: the rectangle whose
+  // sides are as long as the boundary's arcs between the corners (an atlas's charts fill theirs).
+  double rectangle_aspect = 1;
+  bool corners_at_turns = false;  // square corners where the boundary turns most (square_corners.h)
   InitialWeights weights = InitialWeights::Floater;
   double exponent = 1.0;  // eta in (0, 1]: weights are divided by sigma_j^eta each pass
   int max_passes = 10;    // 0: U0 only; 1: U0 and U1; at most kMostPasses

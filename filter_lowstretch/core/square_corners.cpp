@@ -1,5 +1,6 @@
 #include "square_corners.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -117,9 +118,52 @@ void best_corners_from(int s, const std::vector<double>& arc, const std::vector<
   }
 }
 
+// How much the boundary turns at each loop position: pi minus the sum of the face angles at the
+// vertex, summed with its two loop neighbours so that a corner cut over two edges counts whole.
+std::vector<double> boundary_turning(const DiskMesh& disk) {
+  const int n = int(disk.boundary.size());
+  std::vector<double> angle_sum(size_t(disk.V.rows()), 0.0);
+  for (Eigen::Index f = 0; f < disk.F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d a = disk.V.row(disk.F(f, (k + 1) % 3)) - disk.V.row(disk.F(f, k));
+      const Eigen::Vector3d b = disk.V.row(disk.F(f, (k + 2) % 3)) - disk.V.row(disk.F(f, k));
+      angle_sum[size_t(disk.F(f, k))] += std::atan2(a.cross(b).norm(), a.dot(b));
+    }
+  const double pi = 3.14159265358979323846;
+  std::vector<double> turning(static_cast<size_t>(n), 0.0);
+  for (int i = 0; i < n; ++i)
+    for (int d = -1; d <= 1; ++d) turning[size_t(i)] += pi - angle_sum[size_t(disk.boundary[size_t((i + d + n) % n)])];
+  return turning;
+}
+
+// The four loop positions of sharpest turning at least perimeter / 8 apart, increasing; false if
+// fewer than four such positions exist.
+bool sharpest_turn_corners(const DiskMesh& disk, const std::vector<double>& arc, std::array<int, 4>& corners) {
+  const int n = int(disk.boundary.size());
+  const std::vector<double> turning = boundary_turning(disk);
+  std::vector<int> order(static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i) order[size_t(i)] = i;
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return turning[size_t(a)] > turning[size_t(b)]; });
+  const double perimeter = arc[size_t(n)];
+  std::vector<int> chosen;
+  for (int i : order) {
+    bool apart = true;
+    for (int c : chosen) {
+      const double d = std::abs(arc[size_t(i)] - arc[size_t(c)]);
+      apart = apart && std::min(d, perimeter - d) >= perimeter / 8;
+    }
+    if (apart) chosen.push_back(i);
+    if (chosen.size() == 4) break;
+  }
+  if (chosen.size() < 4) return false;
+  std::sort(chosen.begin(), chosen.end());
+  std::copy(chosen.begin(), chosen.end(), corners.begin());
+  return true;
+}
+
 }  // namespace
 
-SquareCorners choose_square_corners(const DiskMesh& disk) {
+SquareCorners choose_square_corners(const DiskMesh& disk, bool at_sharpest_turns) {
   const int n = int(disk.boundary.size());
   SquareCorners result;
   if (n < 4) {  // a lone triangle: three corners of the square
@@ -127,8 +171,11 @@ SquareCorners choose_square_corners(const DiskMesh& disk) {
     return result;
   }
   const std::vector<double> arc = boundary_arc_lengths(disk);
-  result.corners = quarter_corners(arc, n);
   const std::vector<Arc> arcs = arcs_needing_a_corner(disk);
+  if (at_sharpest_turns && sharpest_turn_corners(disk, arc, result.corners) &&
+      collapsed_chords(arcs, result.corners, n) == 0)
+    return result;
+  result.corners = quarter_corners(arc, n);
   if (collapsed_chords(arcs, result.corners, n) == 0) return result;
   // The search costs about 3 n^2 steps per position of the shortest arc: past this many
   // boundary vertices, kink the sides instead of searching.

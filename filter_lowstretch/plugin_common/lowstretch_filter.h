@@ -18,7 +18,6 @@
 #include "filter_lowstretch/core/parameterize.h"
 #include "filter_lowstretch/plugin_common/result_lines.h"
 #include "filter_lowstretch/vcg/mesh_arrays.h"
-#include "filter_lowstretch/vcg/pack_charts.h"
 
 namespace lowstretch {
 namespace plugin {
@@ -148,7 +147,7 @@ Run run(const MeshType& m, const ChartOptions& options, const std::function<void
   Run run;
   run.rows = mesh_to_arrays(m, V, F);
   try {
-    run.result = parameterize_charts(V, F, options, pack_charts_with_vcglib);
+    run.result = parameterize_charts(V, F, options);
   } catch (const std::exception& e) {  // e.g. std::bad_alloc: never let it reach MeshLab's event loop
     run.error = std::string("internal error: ") + e.what();
     return run;

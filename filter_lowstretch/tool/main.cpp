@@ -13,7 +13,6 @@
 #include "../core/parameterize.h"
 #include "../plugin_common/result_lines.h"
 #include "../vcg/mesh_arrays.h"
-#include "../vcg/pack_charts.h"
 #include "mesh_io.h"
 #include "uv_svg.h"
 
@@ -24,13 +23,15 @@ using namespace lowstretch;
 const char* kUsage =
     "usage: lowstretch INPUT [-o OUTPUT.obj|.ply] [--boundary square|circle|natural]\n"
     "                  [--weights floater|meanvalue|harmonic] [--exponent E] [--max-passes N]\n"
-    "                  [--all-passes] [--solver amg|direct] [--non-disk reject|charts] [--json]\n"
-    "                  [--texture-size N] [--gutter G] [--refine] [--svg UV.svg]\n"
+    "                  [--all-passes] [--solver amg|direct] [--non-disk reject|charts] [--atlas]\n"
+    "                  [--max-stretch S] [--texture-size N] [--gutter G] [--refine] [--json] [--svg UV.svg]\n"
     "Reads OFF, OBJ or PLY; writes per-corner texture coordinates and stretch as quality.\n"
     "Every texture coordinate stays G texels (default 2) inside the border of an N x N texture\n"
     "(default 1024), so that baking a texture of that size never addresses a texel outside it.\n"
-    "--non-disk charts parameterizes a mesh that is not a disk (holes, closed, handles, several\n"
-    "parts) as disk charts packed into the unit square; reject (the default) refuses it.\n"
+    "--non-disk charts makes an atlas of a mesh that is not a disk (holes, closed, handles, several\n"
+    "parts); reject (the default) refuses it. --atlas makes an atlas of any mesh: a chart whose L2\n"
+    "stretch is above S (default 1.15) is cut in two and mapped again; every chart fills a rectangle\n"
+    "and the rectangles tile the texture, G texels apart. A disk that meets S stays one chart.\n"
     "--all-passes runs max-passes passes even when the stretch stops falling (benchmarks).\n"
     "--refine then lowers the kept map's L2 stretch directly (at most 10 times the method's time).\n"
     "--solver amg (the default) solves each pass by algebraic multigrid, falling back to the sparse\n"
@@ -65,16 +66,18 @@ std::string parse(int argc, char** argv, Arguments& a) {
     const bool has_value = i + 1 < argc;
     auto value = [&]() { return std::string(argv[++i]); };
     if (arg == "--json") a.json = true;
+    else if (arg == "--atlas") a.charts.non_disk = NonDisk::Atlas;
     else if (arg == "--refine") a.charts.disk.refine = true;
     else if (arg == "--all-passes") a.charts.disk.stop_when_stretch_rises = false;
     else if (arg == "-h" || arg == "--help") return "help";
     else if ((arg == "-o" || arg == "--svg" || arg == "--boundary" || arg == "--weights" || arg == "--exponent" ||
               arg == "--max-passes" || arg == "--non-disk" || arg == "--solver" || arg == "--texture-size" ||
-              arg == "--gutter") && !has_value) return arg + " needs a value";
+              arg == "--gutter" || arg == "--max-stretch") && !has_value) return arg + " needs a value";
     else if (arg == "-o") a.output = value();
     else if (arg == "--svg") a.svg = value();
     else if (arg == "--non-disk") {
       const std::string v = value();
+      if (a.charts.non_disk == NonDisk::Atlas) continue;  // --atlas covers non-disks too
       if (v == "reject") a.charts.non_disk = NonDisk::Reject;
       else if (v == "charts") a.charts.non_disk = NonDisk::Charts;
       else return "--non-disk takes reject or charts, not '" + v + "'";
@@ -103,6 +106,8 @@ std::string parse(int argc, char** argv, Arguments& a) {
       if (!parse_whole_number(argv[++i], a.charts.disk.max_passes)) return "--max-passes takes a whole number";
     } else if (arg == "--texture-size") {
       if (!parse_whole_number(argv[++i], a.charts.texture_size)) return "--texture-size takes a whole number";
+    } else if (arg == "--max-stretch") {
+      if (!parse_number(argv[++i], a.charts.max_stretch)) return "--max-stretch takes a number";
     } else if (arg == "--gutter") {
       if (!parse_number(argv[++i], a.charts.gutter)) return "--gutter takes a number";
     } else if (!arg.empty() && arg[0] == '-') return "unknown option " + arg;
@@ -119,6 +124,7 @@ std::string flag_of(const std::string& option) {
   if (option == "max_passes") return "--max-passes";
   if (option == "texture_size") return "--texture-size";
   if (option == "gutter") return "--gutter";
+  if (option == "max_stretch") return "--max-stretch";
   return option;
 }
 
@@ -171,13 +177,15 @@ void print_json(const Arguments& a, const Eigen::MatrixXd& V, const Eigen::Matri
   o << ",\n \"texture_size\": " << a.charts.texture_size << ", \"gutter\": " << number(a.charts.gutter)
     << ", \"coverage\": " << number(c.coverage) << ", \"subtexel_triangles\": " << c.subtexel_triangles
     << ", \"float_collapsed\": " << c.float_collapsed << ",\n \"layout\": " << pass_json(c.layout);
-  if (a.charts.non_disk == NonDisk::Charts) {
-    o << ",\n \"non_disk\": \"charts\", \"input_is_disk\": " << (c.input_is_disk ? "true" : "false")
-      << ", \"chart_count\": " << c.charts.size() << ", \"seam_length\": " << number(c.seam_length) << ",\n \"charts\": [";
+  if (a.charts.non_disk != NonDisk::Reject) {
+    o << ",\n \"non_disk\": \"" << to_string(a.charts.non_disk) << "\", \"input_is_disk\": " << (c.input_is_disk ? "true" : "false")
+      << ", \"max_stretch\": " << number(a.charts.max_stretch) << ", \"chart_count\": " << c.charts.size()
+      << ", \"seam_length\": " << number(c.seam_length) << ",\n \"charts\": [";
     for (size_t i = 0; i < c.charts.size(); ++i) {
       const Chart& ch = c.charts[i];
       o << (i ? ",\n  " : "\n  ") << "{\"faces\": " << ch.faces << ", \"closed_holes\": " << ch.closed_holes
         << ", \"seam_length\": " << number(ch.seam_length) << ", \"l2_stretch\": " << number(ch.l2_stretch)
+        << ", \"linf_stretch\": " << number(ch.linf_stretch) << ", \"above_bound\": " << (ch.above_bound ? "true" : "false")
         << ", \"chosen_pass\": " << ch.chosen_pass << ", \"passes\": " << ch.passes << "}";
     }
     o << "],\n \"layout_passes\": [";
@@ -218,7 +226,7 @@ int main(int argc, char** argv) {
   Eigen::MatrixXi F;
   const ArrayRows rows = mesh_to_arrays(mesh, V, F);
 
-  const ChartsResult result = parameterize_charts(V, F, args.charts, pack_charts_with_vcglib);
+  const ChartsResult result = parameterize_charts(V, F, args.charts);
   if (result.error) {
     // An option value that the core refuses is a bad argument, as the usage says.
     if (result.error.code == ErrorCode::InvalidOption) {

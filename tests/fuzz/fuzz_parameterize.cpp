@@ -23,7 +23,6 @@
 #include "atlas/charts.h"
 #include "core/parameterize.h"
 #include "generated_meshes.h"
-#include "vcg/pack_charts.h"
 
 namespace {
 
@@ -175,7 +174,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   lowstretch::ChartOptions chart_options;
   chart_options.disk = options;
   chart_options.non_disk = lowstretch::NonDisk::Charts;
-  const lowstretch::ChartsResult c = lowstretch::parameterize_charts(V, F, chart_options, lowstretch::pack_charts_with_vcglib);
+  const lowstretch::ChartsResult c = lowstretch::parameterize_charts(V, F, chart_options);
   if (std::getenv("LOWSTRETCH_FUZZ_PRINT")) {
     std::printf("charts: error %s (%s), input is a disk %d, %d charts, uv in [%.17g, %.17g]\n", lowstretch::code_name(c.error.code),
                 c.error ? lowstretch::message(c.error).c_str() : "", int(c.input_is_disk), int(c.charts.size()),

@@ -13,7 +13,6 @@
 #include "core/parameterize.h"
 #include "tool/mesh_io.h"
 #include "vcg/mesh_arrays.h"
-#include "vcg/pack_charts.h"
 
 namespace lowstretch_fuzz {
 
@@ -53,7 +52,7 @@ inline void read_and_parameterize(const char* extension, const uint8_t* data, si
   const lowstretch::ArrayRows rows = lowstretch::mesh_to_arrays(mesh, V, F);
   lowstretch::ChartOptions options;
   options.disk.max_passes = 2;
-  const lowstretch::ChartsResult result = lowstretch::parameterize_charts(V, F, options, lowstretch::pack_charts_with_vcglib);
+  const lowstretch::ChartsResult result = lowstretch::parameterize_charts(V, F, options);
   if (result.error) {
     if (lowstretch::message(result.error).empty()) std::abort();
     return;

@@ -15,7 +15,6 @@
 #include "generated_meshes.h"
 #include "mesh_io.h"
 #include "vcg/mesh_arrays.h"
-#include "vcg/pack_charts.h"
 
 using namespace lowstretch;
 
@@ -24,7 +23,7 @@ namespace {
 ChartsResult charts_of(const testmesh::Mesh& m, NonDisk non_disk = NonDisk::Charts) {
   ChartOptions options;
   options.non_disk = non_disk;
-  return parameterize_charts(m.V, m.F, options, pack_charts_with_vcglib);
+  return parameterize_charts(m.V, m.F, options);
 }
 
 Eigen::Vector2d corner(const ChartsResult& r, Eigen::Index f, int k) { return r.corner_uv.block<1, 2>(f, 2 * k).transpose(); }
@@ -197,7 +196,7 @@ TEST(Charts, TrianglesThatFloatRoundingCollapsesAreCountedAndNoted) {
   V << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 1e-12, 0;
   Eigen::MatrixXi F(4, 3);
   F << 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4;
-  const ChartsResult r = parameterize_charts(V, F, ChartOptions(), pack_charts_with_vcglib);
+  const ChartsResult r = parameterize_charts(V, F, ChartOptions());
   ASSERT_FALSE(r.error) << message(r.error);
   const PassMetrics& kept = r.disk_passes[size_t(r.chosen_pass)];
   EXPECT_EQ(kept.flipped + kept.degenerate, 0);  // in double
@@ -213,7 +212,7 @@ TEST(Charts, GutterIsCountedInTexelsOfTheStatedTexture) {
   ChartOptions options;
   options.texture_size = 64;
   options.gutter = 0.5;  // the least: half a texel of a 64-texel texture
-  const ChartsResult r = parameterize_charts(m.V, m.F, options, pack_charts_with_vcglib);
+  const ChartsResult r = parameterize_charts(m.V, m.F, options);
   ASSERT_FALSE(r.error) << message(r.error);
   EXPECT_NEAR(r.corner_uv.minCoeff() * 64, 0.5, 1e-12);
   EXPECT_NEAR(r.corner_uv.maxCoeff() * 64, 63.5, 1e-12);
@@ -227,7 +226,7 @@ TEST(Charts, TextureSizeAndGutterOutOfRangeAreRefusedByName) {
     ChartOptions options;
     options.texture_size = c.size;
     options.gutter = c.gutter;
-    const ChartsResult r = parameterize_charts(m.V, m.F, options, pack_charts_with_vcglib);
+    const ChartsResult r = parameterize_charts(m.V, m.F, options);
     EXPECT_EQ(r.error.code, ErrorCode::InvalidOption) << c.size << " " << c.gutter;
     EXPECT_EQ(r.error.option, c.option);
     EXPECT_EQ(r.corner_uv.size(), 0);

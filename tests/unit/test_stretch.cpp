@@ -12,7 +12,6 @@
 #include "core/stretch.h"
 #include "generated_meshes.h"
 #include "vcg/mesh_arrays.h"
-#include "vcg/pack_charts.h"
 
 using namespace lowstretch;
 
@@ -93,7 +92,7 @@ TEST(Stretch, AgreesWithVcglibDistortionOnAParameterizedSurface) {
   const testmesh::Mesh m = testmesh::hemisphere(12, 24);
   ChartOptions o;
   o.disk.max_passes = 3;
-  const ChartsResult r = parameterize_charts(m.V, m.F, o, pack_charts_with_vcglib);
+  const ChartsResult r = parameterize_charts(m.V, m.F, o);
   ASSERT_FALSE(r.error) << message(r.error);
   ASSERT_TRUE(r.input_is_disk);
 
