@@ -3,7 +3,6 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <chrono>
-#include <cstdlib>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -26,7 +25,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 const double kInf = std::numeric_limits<double>::infinity();
-int kPayCheckFaces = std::getenv("PAY") ? std::atoi(std::getenv("PAY")) : 400;
 
 // The problems that charts solve; anything else (non-manifold, non-orientable, bad indices or
 // coordinates) stays an error.
@@ -207,7 +205,7 @@ bool needs_split(const ChartPass& p, double max_stretch) {
 }
 
 // The method on a chart whose mesh is built, onto a rectangle of `aspect` (0: its own).
-void solve(SolvedChart& chart, Options options, double aspect) {
+void solve_onto(SolvedChart& chart, Options options, double aspect) {
   options.boundary = BoundaryShape::Square;
   options.rectangle_aspect = aspect;
   options.corners_at_turns = true;
@@ -223,6 +221,23 @@ void solve(SolvedChart& chart, Options options, double aspect) {
   chart.aspect = box.sizes().y() > 0 ? box.sizes().x() / box.sizes().y() : 1;
 }
 
+bool better(const ChartPass& a, const ChartPass& b) {
+  return a.flipped + a.degenerate < b.flipped + b.degenerate ||
+         (a.flipped + a.degenerate == b.flipped + b.degenerate && a.l2_stretch < b.l2_stretch);
+}
+
+// The method on a chart whose mesh is built, onto a rectangle of `aspect`; aspect 0: onto the
+// better of its own rectangle (sides as long as its boundary arcs) and the square.
+void solve(SolvedChart& chart, const Options& options, double aspect) {
+  solve_onto(chart, options, aspect);
+  if (aspect != 0 || chart.map.error || std::abs(std::log(chart.aspect)) < 0.02) return;
+  SolvedChart square;
+  square.mesh = chart.mesh;  // small beside the solve
+  square.faces = chart.faces;
+  solve_onto(square, options, 1);
+  if (!square.map.error && better(square.kept, chart.kept)) chart = std::move(square);
+}
+
 // Runs job(i) for i < count on up to `threads` threads, each taking every threads-th index, so
 // that which thread computes what never depends on timing.
 void for_each_index(int count, const std::function<void(int)>& job) {
@@ -234,17 +249,6 @@ void for_each_index(int count, const std::function<void(int)>& job) {
     });
   for (int i = 0; i < count; i += threads) job(i);
   for (std::thread& w : workers) w.join();
-}
-
-// The L2 stretch of charts laid out at one texel density: L2^2 is their area-weighted mean.
-double combined_stretch(const std::vector<SolvedChart>& charts, size_t first, size_t end) {
-  double weighted = 0, area = 0;
-  for (size_t i = first; i < end; ++i) {
-    if (charts[i].kept.flipped + charts[i].kept.degenerate > 0) return kInf;
-    weighted += charts[i].kept.area_3d * charts[i].kept.l2_stretch * charts[i].kept.l2_stretch;
-    area += charts[i].kept.area_3d;
-  }
-  return area > 0 ? std::sqrt(weighted / area) : kInf;
 }
 
 // The parts of a chart, each with its mesh built; empty if the chart cannot be cut into parts
@@ -261,69 +265,80 @@ std::vector<SolvedChart> cut_chart(const Eigen::MatrixXd& unit_V, const Eigen::M
   return parts;
 }
 
-// Cuts the charts that stretch too much and maps the parts again, round after round. A cut must
-// pay: if its parts together stretch nearly as much as the chart (rectangles fit small, coarse
-// parts badly), the chart stays whole. Stops at the chart limit.
+// The charts cut from one another: node 0.. are the components, a node's parts come after it.
+struct ChartTree {
+  std::vector<SolvedChart> nodes;
+  std::vector<std::vector<int>> parts;  // per node, empty for a leaf
+};
+
+// Undoes the cuts that did not pay: bottom up, a chart whose parts (all its leaves) together
+// stretch at least as much as it does alone becomes a leaf again, so that its seams go. A cut
+// that pays only after further cuts is kept: the leaves are compared, not the first parts.
+void undo_cuts_that_did_not_pay(ChartTree& tree) {
+  const size_t n = tree.nodes.size();
+  std::vector<double> weighted(n, 0.0), area(n, 0.0);  // over each node's leaves: sum A L2^2, sum A
+  for (size_t i = n; i-- > 0;) {
+    const ChartPass& alone = tree.nodes[i].kept;
+    const bool valid = alone.flipped + alone.degenerate == 0;
+    const double own = valid ? alone.area_3d * alone.l2_stretch * alone.l2_stretch : kInf;
+    if (!tree.parts[i].empty()) {
+      for (int p : tree.parts[i]) {
+        weighted[i] += weighted[size_t(p)];
+        area[i] += area[size_t(p)];
+      }
+      if (!(own <= weighted[i])) continue;
+      tree.parts[i].clear();
+    }
+    weighted[i] = own;
+    area[i] = alone.area_3d;
+  }
+}
+
+// Cuts the charts that stretch too much and maps the parts again, round after round, until every
+// chart meets the bound, is too small to cut or the chart limit is reached; then undoes the cuts
+// that did not pay. Returns the leaves.
 Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, std::vector<std::vector<int>> components,
-                          const ChartOptions& options, std::vector<SolvedChart>& accepted, std::vector<std::string>& notes) {
+                          const ChartOptions& options, std::vector<SolvedChart>& leaves, std::vector<std::string>& notes) {
   const std::vector<int> twin = opposite_half_edges(F);
   std::vector<int> local_of(static_cast<size_t>(unit_V.rows()), -1);
-  // round: the charts to map now; parent_of[i]: the chart they were cut from (index into
-  // parents), -1 for components.
-  std::vector<SolvedChart> round, parents;
-  std::vector<int> parent_of;
+  ChartTree tree;
   for (std::vector<int>& faces : components) {
-    round.emplace_back();
-    if (Error e = make_chart_mesh(unit_V, F, faces, local_of, round.back().mesh)) return e;
-    round.back().faces = std::move(faces);
-    parent_of.push_back(-1);
+    tree.nodes.emplace_back();
+    if (Error e = make_chart_mesh(unit_V, F, faces, local_of, tree.nodes.back().mesh)) return e;
+    tree.nodes.back().faces = std::move(faces);
   }
-  int charts = int(round.size()), faces_done = 0;
+  tree.parts.resize(tree.nodes.size());
+  int charts = int(tree.nodes.size());
   bool limit_reached = false;
-  while (!round.empty()) {
-    for_each_index(int(round.size()), [&](int i) { solve(round[size_t(i)], options.disk, 0); });
-    std::vector<SolvedChart> next, next_parents;
-    std::vector<int> next_parent_of;
-    for (size_t first = 0, end = 0; first < round.size(); first = end) {
-      for (end = first + 1; end < round.size() && parent_of[end] >= 0 && parent_of[end] == parent_of[first];) ++end;
-      for (size_t i = first; i < end; ++i)
-        if (round[i].map.error) return round[i].map.error;
-      if (parent_of[first] >= 0 && int(parents[size_t(parent_of[first])].faces.size()) < kPayCheckFaces) {
-        // the parts of a small chart: keep the chart if cutting did not pay
-        SolvedChart& parent = parents[size_t(parent_of[first])];
-        const double before = combined_stretch(parents, size_t(parent_of[first]), size_t(parent_of[first]) + 1);
-        if (!(combined_stretch(round, first, end) < before)) {
-          charts -= int(end - first) - 1;
-          faces_done += int(parent.faces.size());
-          accepted.push_back(std::move(parent));
-          continue;
-        }
+  for (size_t first = 0, end = tree.nodes.size(); first < end; first = end, end = tree.nodes.size()) {
+    for_each_index(int(end - first), [&](int i) { solve(tree.nodes[first + size_t(i)], options.disk, 0); });
+    for (size_t i = first; i < end; ++i) {
+      if (tree.nodes[i].map.error) return tree.nodes[i].map.error;
+      if (!needs_split(tree.nodes[i].kept, options.max_stretch) || int(tree.nodes[i].faces.size()) < 2 * kSmallestChart)
+        continue;
+      if (charts >= options.max_charts) {
+        limit_reached = true;
+        continue;
       }
-      for (size_t i = first; i < end; ++i) {
-        SolvedChart& chart = round[i];
-        std::vector<SolvedChart> parts;
-        if (needs_split(chart.kept, options.max_stretch) && int(chart.faces.size()) >= 2 * kSmallestChart) {
-          if (charts < options.max_charts) parts = cut_chart(unit_V, F, twin, chart, local_of);
-          else limit_reached = true;
-        }
-        if (parts.empty()) {
-          faces_done += int(chart.faces.size());
-          accepted.push_back(std::move(chart));
-          continue;
-        }
-        charts += int(parts.size()) - 1;
-        for (SolvedChart& part : parts) {
-          next.push_back(std::move(part));
-          next_parent_of.push_back(int(next_parents.size()));
-        }
-        next_parents.push_back(std::move(chart));
+      std::vector<SolvedChart> parts = cut_chart(unit_V, F, twin, tree.nodes[i], local_of);
+      charts += std::max(0, int(parts.size()) - 1);
+      for (SolvedChart& part : parts) {
+        tree.parts[i].push_back(int(tree.nodes.size()));
+        tree.nodes.push_back(std::move(part));
+        tree.parts.emplace_back();
       }
     }
-    round = std::move(next);
-    parents = std::move(next_parents);
-    parent_of = std::move(next_parent_of);
-    if (options.disk.progress && !options.disk.progress(0.9 * faces_done / double(F.rows()), "charts"))
+    if (options.disk.progress && !options.disk.progress(0.9 * (1 - std::pow(0.5, double(end))), "charts"))
       return {ErrorCode::Cancelled, 0, ""};
+  }
+  undo_cuts_that_did_not_pay(tree);
+  std::vector<int> stack;
+  for (size_t root = components.size(); root-- > 0;) stack.push_back(int(root));
+  while (!stack.empty()) {  // the leaves, depth first, parts in order
+    const int i = stack.back();
+    stack.pop_back();
+    if (tree.parts[size_t(i)].empty()) leaves.push_back(std::move(tree.nodes[size_t(i)]));
+    for (size_t k = tree.parts[size_t(i)].size(); k-- > 0;) stack.push_back(tree.parts[size_t(i)][k]);
   }
   if (limit_reached)
     notes.push_back("the chart limit (" + std::to_string(options.max_charts) + ") stopped the splitting");
@@ -340,7 +355,9 @@ Error lay_out(std::vector<SolvedChart>& charts, const ChartOptions& options, Eig
   const double texels = 2 * options.gutter + 4, least = total * texels * texels / (double(options.texture_size) * options.texture_size);
   std::vector<double> areas;
   for (const SolvedChart& c : charts) areas.push_back(std::max({c.kept.area_3d, least, 1e-300}));
-  const std::vector<Eigen::AlignedBox2d> cells = slice_unit_square(areas);
+  std::vector<double> preferred;
+  for (const SolvedChart& c : charts) preferred.push_back(c.aspect);
+  const std::vector<Eigen::AlignedBox2d> cells = slice_unit_square(areas, preferred);
   std::vector<char> turned(charts.size(), 0);
   for_each_index(int(charts.size()), [&](int i) {
     SolvedChart& c = charts[size_t(i)];

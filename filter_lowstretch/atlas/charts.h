@@ -30,7 +30,7 @@ struct ChartOptions {
                                        // (between charts too)
   // A chart whose L2 stretch is above max_stretch, or that has a flipped or zero-area triangle,
   // is cut in two, until max_charts; charts of fewer than 2 x kSmallestChart faces stay whole.
-  double max_stretch = 1.15;           // at least 1
+  double max_stretch = 1.2;            // at least 1
   int max_charts = 1000;               // at least 1
 };
 constexpr int kSmallestChart = 50;

@@ -1,8 +1,9 @@
 // Where the charts go: every chart is mapped onto a rectangle, so the rectangles can tile the
 // unit square with nothing between them but the gutter. A squarified treemap (Bruls, Huizing and
 // van Wijk 2000): the charts, largest first, are laid in rows along the shorter side of the space
-// left, a row growing while that makes its cells squarer. Every cell's area is its chart's share,
-// so the texel density is the same everywhere, and cells stay close to squares.
+// left, a row growing while that brings its cells closer to their charts' preferred shapes (squares
+// in the original). Every cell's area is its chart's share, so the texel density is the same
+// everywhere.
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -10,7 +11,9 @@
 
 namespace lowstretch {
 
-// areas: one positive number per chart. Returns each chart's cell; the cells tile [0,1]^2.
-std::vector<Eigen::AlignedBox2d> slice_unit_square(const std::vector<double>& areas);
+// areas: one positive number per chart; preferred: the width / height each chart fits best (a
+// chart may turn a quarter, so 2 and 1/2 are the same). Returns each chart's cell; the cells tile
+// [0,1]^2.
+std::vector<Eigen::AlignedBox2d> slice_unit_square(const std::vector<double>& areas, const std::vector<double>& preferred);
 
 }  // namespace lowstretch

@@ -277,6 +277,7 @@ def main():
     parser.add_argument("--tool-args", default="--non-disk charts", help="lowstretch arguments (one string)")
     parser.add_argument("--markdown", action="store_true")
     parser.add_argument("--skip-uvatlas", action="store_true", help="UVAtlas takes 1-40 s per mesh")
+    parser.add_argument("--ours-only", action="store_true", help="no peers (tuning runs)")
     parser.add_argument("meshes", nargs="+", metavar="MESH")
     argv = sys.argv[1:]
     if "--tool-args" in argv[:-1]:  # so that a value starting with "--" is taken as the value
@@ -287,7 +288,7 @@ def main():
     if os.path.realpath(sys.prefix) != os.path.realpath(venv):  # numpy and the peers live in the venv
         python = ensure_venv(venv, not args.skip_uvatlas)
         os.execv(python, [python, os.path.abspath(__file__), *sys.argv[1:]])
-    methods = ["lowstretch", "xatlas"] + ([] if args.skip_uvatlas else ["uvatlas"])
+    methods = ["lowstretch"] + ([] if args.ours_only else ["xatlas"] + ([] if args.skip_uvatlas else ["uvatlas"]))
     failed, summaries = [], []
     if args.markdown:
         print("| " + " | ".join(COLUMNS) + " |\n|" + "---|" * len(COLUMNS), flush=True)
