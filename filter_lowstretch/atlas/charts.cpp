@@ -200,6 +200,9 @@ struct SolvedChart {
   double aspect = 1;       // of the rectangle it is mapped onto, width / height
 };
 
+// How far from its own shape a chart may be stretched to fill its cell (width / height ratio).
+const double kMostCellMismatch = 2;
+
 bool needs_split(const ChartPass& p, double max_stretch) {
   return p.flipped + p.degenerate > 0 || !(p.l2_stretch <= max_stretch);
 }
@@ -363,7 +366,10 @@ Error lay_out(std::vector<SolvedChart>& charts, const ChartOptions& options, Eig
     SolvedChart& c = charts[size_t(i)];
     const double cell = cells[size_t(i)].sizes().x() / cells[size_t(i)].sizes().y();
     turned[size_t(i)] = std::abs(std::log(c.aspect * cell)) < std::abs(std::log(c.aspect / cell));
-    const double wanted = std::min(64.0, std::max(1.0 / 64, turned[size_t(i)] ? 1 / cell : cell));
+    // A cell far from the chart's shape (a small chart beside a large one gets a strip) is
+    // filled only in part: stretching the chart to fit would cost more than the empty texels.
+    const double fits = turned[size_t(i)] ? 1 / cell : cell;
+    const double wanted = std::min(c.aspect * kMostCellMismatch, std::max(c.aspect / kMostCellMismatch, fits));
     if (std::abs(std::log(wanted / c.aspect)) > 0.02) solve(c, options.disk, wanted);
   });
   // Half the gutter around every cell, in [0,1]^2 before store() moves it into [g, 1 - g]^2.
@@ -382,6 +388,13 @@ Error lay_out(std::vector<SolvedChart>& charts, const ChartOptions& options, Eig
     target.max().array() -= inset;
     if (!(target.sizes().minCoeff() > 0) || !(box.sizes().minCoeff() > 0))
       return {ErrorCode::ChartsNotPacked, static_cast<long long>(charts.size()), ""};
+    const double chart = turned[c] ? box.sizes().y() / box.sizes().x() : box.sizes().x() / box.sizes().y();
+    Eigen::Vector2d size = target.sizes();
+    if (std::abs(std::log(chart * size.y() / size.x())) > 0.02) {  // the part of the cell of the chart's shape
+      if (chart > size.x() / size.y()) size.y() = size.x() / chart;
+      else size.x() = size.y() * chart;
+      target.max() = target.min() + size;
+    }
     for (size_t j = 0; j < charts[c].faces.size(); ++j) {
       const int f = charts[c].faces[j];
       result.face_chart[size_t(f)] = int(c);

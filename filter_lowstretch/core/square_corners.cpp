@@ -136,29 +136,34 @@ std::vector<double> boundary_turning(const DiskMesh& disk) {
   return turning;
 }
 
-// The four loop positions of sharpest turning at least perimeter / 8 apart, increasing; false if
-// fewer than four such positions exist.
-bool sharpest_turn_corners(const DiskMesh& disk, const std::vector<double>& arc, std::array<int, 4>& corners) {
+// Corners at the quarter arc lengths from the sharpest turn, each of the other three moved to the
+// sharpest turn within an eighth of the perimeter of it if that turns by 30 degrees or more (a
+// round boundary, where no turn stands out, keeps the quarter arc lengths). Increasing positions.
+std::array<int, 4> sharpest_turn_corners(const DiskMesh& disk, const std::vector<double>& arc) {
   const int n = int(disk.boundary.size());
   const std::vector<double> turning = boundary_turning(disk);
-  std::vector<int> order(static_cast<size_t>(n));
-  for (int i = 0; i < n; ++i) order[size_t(i)] = i;
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return turning[size_t(a)] > turning[size_t(b)]; });
-  const double perimeter = arc[size_t(n)];
-  std::vector<int> chosen;
-  for (int i : order) {
-    bool apart = true;
-    for (int c : chosen) {
-      const double d = std::abs(arc[size_t(i)] - arc[size_t(c)]);
-      apart = apart && std::min(d, perimeter - d) >= perimeter / 8;
+  const double perimeter = arc[size_t(n)], pi = 3.14159265358979323846;
+  const int first = int(std::max_element(turning.begin(), turning.end()) - turning.begin());
+  std::array<int, 4> corners{first, first, first, first};
+  int at = first;  // walks the loop once from the first corner
+  for (int k = 1; k < 4; ++k) {
+    const double target = arc[size_t(first)] + k * perimeter / 4;
+    const auto unrolled = [&](int i) { return i >= first ? arc[size_t(i)] : arc[size_t(i)] + perimeter; };
+    int nearest = -1, sharpest = -1;
+    for (int step = at - first + 1; step < n; ++step) {
+      const int i = (first + step) % n;
+      const double d = unrolled(i) - target;
+      if (d > perimeter / 8) break;
+      if (d < -perimeter / 8) continue;
+      if (nearest < 0 || std::abs(d) < std::abs(unrolled(nearest) - target)) nearest = i;
+      if (sharpest < 0 || turning[size_t(i)] > turning[size_t(sharpest)]) sharpest = i;
     }
-    if (apart) chosen.push_back(i);
-    if (chosen.size() == 4) break;
+    if (nearest < 0) nearest = (at + 1) % n;  // a coarse loop: the next vertex
+    corners[size_t(k)] = sharpest >= 0 && turning[size_t(sharpest)] >= pi / 6 ? sharpest : nearest;
+    at = corners[size_t(k)];
   }
-  if (chosen.size() < 4) return false;
-  std::sort(chosen.begin(), chosen.end());
-  std::copy(chosen.begin(), chosen.end(), corners.begin());
-  return true;
+  std::sort(corners.begin(), corners.end());
+  return corners;
 }
 
 }  // namespace
@@ -172,9 +177,11 @@ SquareCorners choose_square_corners(const DiskMesh& disk, bool at_sharpest_turns
   }
   const std::vector<double> arc = boundary_arc_lengths(disk);
   const std::vector<Arc> arcs = arcs_needing_a_corner(disk);
-  if (at_sharpest_turns && sharpest_turn_corners(disk, arc, result.corners) &&
-      collapsed_chords(arcs, result.corners, n) == 0)
-    return result;
+  if (at_sharpest_turns) {
+    result.corners = sharpest_turn_corners(disk, arc);
+    const bool distinct = std::adjacent_find(result.corners.begin(), result.corners.end()) == result.corners.end();
+    if (distinct && collapsed_chords(arcs, result.corners, n) == 0) return result;
+  }
   result.corners = quarter_corners(arc, n);
   if (collapsed_chords(arcs, result.corners, n) == 0) return result;
   // The search costs about 3 n^2 steps per position of the shortest arc: past this many
