@@ -198,6 +198,7 @@ struct SolvedChart {
   std::vector<ChartPass> passes;
   ChartPass kept;          // passes[map.chosen_pass]
   double aspect = 1;       // of the rectangle it is mapped onto, width / height
+  const char* kept_whole = nullptr;  // why a chart above the bound was not cut
 };
 
 // How far from its own shape a chart may be stretched to fill its cell (width / height ratio).
@@ -291,6 +292,7 @@ void undo_cuts_that_did_not_pay(ChartTree& tree) {
       }
       if (!(own <= weighted[i])) continue;
       tree.parts[i].clear();
+      tree.nodes[i].kept_whole = "its parts stretched more";
     }
     weighted[i] = own;
     area[i] = alone.area_3d;
@@ -299,9 +301,10 @@ void undo_cuts_that_did_not_pay(ChartTree& tree) {
 
 // Cuts the charts that stretch too much and maps the parts again, round after round, until every
 // chart meets the bound, is too small to cut or the chart limit is reached; then undoes the cuts
-// that did not pay. Returns the leaves.
+// that did not pay. Returns the leaves, and if any part was cut, the components as they were.
 Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, std::vector<std::vector<int>> components,
-                          const ChartOptions& options, std::vector<SolvedChart>& leaves, std::vector<std::string>& notes) {
+                          const ChartOptions& options, std::vector<SolvedChart>& leaves, std::vector<SolvedChart>& uncut,
+                          std::vector<std::string>& notes) {
   const std::vector<int> twin = opposite_half_edges(F);
   std::vector<int> local_of(static_cast<size_t>(unit_V.rows()), -1);
   ChartTree tree;
@@ -317,13 +320,18 @@ Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
     for_each_index(int(end - first), [&](int i) { solve(tree.nodes[first + size_t(i)], options.disk, 0); });
     for (size_t i = first; i < end; ++i) {
       if (tree.nodes[i].map.error) return tree.nodes[i].map.error;
-      if (!needs_split(tree.nodes[i].kept, options.max_stretch) || int(tree.nodes[i].faces.size()) < 2 * kSmallestChart)
+      if (!needs_split(tree.nodes[i].kept, options.max_stretch)) continue;
+      if (int(tree.nodes[i].faces.size()) < 2 * kSmallestChart) {
+        tree.nodes[i].kept_whole = "too few faces to cut";
         continue;
+      }
       if (charts >= options.max_charts) {
+        tree.nodes[i].kept_whole = "the chart limit is reached";
         limit_reached = true;
         continue;
       }
       std::vector<SolvedChart> parts = cut_chart(unit_V, F, twin, tree.nodes[i], local_of);
+      if (parts.empty()) tree.nodes[i].kept_whole = "no cut into disks was found";
       charts += std::max(0, int(parts.size()) - 1);
       for (SolvedChart& part : parts) {
         tree.parts[i].push_back(int(tree.nodes.size()));
@@ -335,6 +343,12 @@ Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
       return {ErrorCode::Cancelled, 0, ""};
   }
   undo_cuts_that_did_not_pay(tree);
+  bool cut = false;
+  for (size_t root = 0; root < components.size(); ++root) cut = cut || !tree.parts[root].empty();
+  for (size_t root = 0; root < components.size() && cut; ++root) {
+    uncut.push_back(tree.nodes[root]);
+    if (!tree.parts[root].empty()) uncut.back().kept_whole = "one chart per part stretched less";
+  }
   std::vector<int> stack;
   for (size_t root = components.size(); root-- > 0;) stack.push_back(int(root));
   while (!stack.empty()) {  // the leaves, depth first, parts in order
@@ -505,50 +519,17 @@ void store(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, int vertex_r
   measure_layout(unit_V, F, vertex_rows, faces_of, result);
 }
 
-}  // namespace
-
-ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options) {
-  const Clock::time_point start = Clock::now();
-  if (Error e = check_chart_options(options)) return failed(e);
-  Result whole = parameterize(V, F, options.disk);
-  const bool split_disk = !whole.error && options.non_disk == NonDisk::Atlas &&
-                          needs_split(as_chart_pass(whole.passes.at(size_t(whole.chosen_pass))), options.max_stretch);
-  if (!whole.error && !split_disk) {
-    ChartsResult result = from_disk(F, std::move(whole));
-    double unit = 1;
-    std::vector<int> all(static_cast<size_t>(F.rows()));
-    for (Eigen::Index f = 0; f < F.rows(); ++f) all[size_t(f)] = int(f);
-    store(unit_box_of_used(V, F, unit), F, int(V.rows()), {all}, options, result);
-    // The layout is the kept pass, as stored: its number, timings and solver stay.
-    const PassMetrics measured = result.layout;
-    result.layout = result.disk_passes.at(size_t(result.chosen_pass));
-    copy_measures(measured, result.layout);
-    result.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
-    return result;
-  }
-  if (!split_disk && (options.non_disk == NonDisk::Reject || !charts_can_fix(whole.error.code))) return failed(whole.error);
-
-  // parameterize checked indices, coordinates, edges and orientation of the whole mesh before it
-  // found the topology wrong; vertex fans are checked per component and between components.
-  int count = 0;
-  const std::vector<int> component = face_components(F, count);
-  if (const int shared = vertices_shared_by_components(F, int(V.rows()), component))
-    return failed({ErrorCode::NonManifoldVertices, shared, ""});
-  std::vector<std::vector<int>> components(static_cast<size_t>(count));
-  for (Eigen::Index f = 0; f < F.rows(); ++f) components[size_t(component[size_t(f)])].push_back(int(f));
-
-  double unit = 1;
-  const Eigen::MatrixXd unit_V = unit_box_of_used(V, F, unit);
+// The charts laid out and measured as the result.
+ChartsResult atlas_of(std::vector<SolvedChart> charts, const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, double unit,
+                      int vertex_rows, const ChartOptions& options) {
   ChartsResult result;
-  if (options.disk.boundary != BoundaryShape::Square)
-    result.notes.push_back("an atlas maps every chart onto a rectangle: the boundary option applies to disks only");
-  std::vector<SolvedChart> charts;
-  if (Error e = split_until_bounded(unit_V, F, std::move(components), options, charts, result.notes)) return failed(e);
   if (Error e = lay_out(charts, options, F.rows(), result)) return failed(e);
   std::vector<std::vector<int>> faces_of;
   std::vector<std::vector<ChartPass>> passes;
   std::vector<int> kept;
+  std::vector<const char*> kept_whole;
   for (const SolvedChart& c : charts) {
+    kept_whole.push_back(c.kept_whole ? c.kept_whole : "its cell's shape stretched it");
     Chart chart;
     chart.faces = int(c.faces.size());
     chart.closed_holes = c.mesh.closed_holes;
@@ -565,20 +546,92 @@ ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi
   }
   result.passes = layout_passes(passes, kept);
   result.seam_length += unit * length_between_charts(unit_V, F, result.face_chart);
-  store(unit_V, F, int(V.rows()), faces_of, options, result);
+  store(unit_V, F, vertex_rows, faces_of, options, result);
   for (size_t c = 0; c < result.charts.size(); ++c) {
     Chart& chart = result.charts[c];
     chart.above_bound = !(chart.l2_stretch <= options.max_stretch);
     if (chart.above_bound)
       result.notes.push_back("chart " + std::to_string(c) + " (" + std::to_string(chart.faces) + " faces) keeps L2 stretch " +
                              number_text(chart.l2_stretch) + " above " + number_text(options.max_stretch) + ": " +
-                             (chart.faces < 2 * kSmallestChart ? "too few faces to cut"
-                              : int(result.charts.size()) >= options.max_charts ? "the chart limit is reached"
-                                                                               : "no cut into disks lowered it"));
+                             kept_whole[c]);
   }
-  result.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
-  result.layout.seconds = result.seconds_total;
   return result;
+}
+
+// Texture efficiency (Sander et al. 2001): the share of the texture a chart covers per unit of
+// stretch, coverage / L2^2. What the atlas is chosen by.
+double efficiency(const ChartsResult& r) { return r.error ? -1 : r.coverage / (r.layout.l2_stretch * r.layout.l2_stretch); }
+
+// Any mesh as charts: its components, cut until they meet the bound, laid out; or one chart per
+// component if that uses the texture better.
+ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options) {
+  // parameterize checked indices, coordinates, edges and orientation of the whole mesh before it
+  // found the topology wrong; vertex fans are checked per component and between components.
+  int count = 0;
+  const std::vector<int> component = face_components(F, count);
+  if (const int shared = vertices_shared_by_components(F, int(V.rows()), component))
+    return failed({ErrorCode::NonManifoldVertices, shared, ""});
+  std::vector<std::vector<int>> components(static_cast<size_t>(count));
+  for (Eigen::Index f = 0; f < F.rows(); ++f) components[size_t(component[size_t(f)])].push_back(int(f));
+
+  double unit = 1;
+  const Eigen::MatrixXd unit_V = unit_box_of_used(V, F, unit);
+  std::vector<std::string> notes;
+  if (options.disk.boundary != BoundaryShape::Square)
+    notes.push_back("an atlas maps every chart onto a rectangle: the boundary option applies to disks only");
+  std::vector<SolvedChart> leaves, uncut;
+  if (Error e = split_until_bounded(unit_V, F, std::move(components), options, leaves, uncut, notes)) return failed(e);
+  const size_t cut_into = leaves.size();
+  ChartsResult result = atlas_of(std::move(leaves), unit_V, F, unit, int(V.rows()), options);
+  if (!uncut.empty()) {
+    ChartsResult whole = atlas_of(std::move(uncut), unit_V, F, unit, int(V.rows()), options);
+    if (efficiency(whole) >= efficiency(result)) {
+      whole.notes.push_back("one chart per part: cut into " + std::to_string(cut_into) + " charts, the atlas had efficiency " +
+                            number_text(efficiency(result)) + " (coverage / L2^2) against " + number_text(efficiency(whole)));
+      result = std::move(whole);
+    }
+  }
+  result.notes.insert(result.notes.begin(), notes.begin(), notes.end());
+  return result;
+}
+
+}  // namespace
+
+ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options) {
+  const Clock::time_point start = Clock::now();
+  if (Error e = check_chart_options(options)) return failed(e);
+  Result whole = parameterize(V, F, options.disk);
+  const auto disk_result = [&]() {
+    ChartsResult result = from_disk(F, std::move(whole));
+    double unit = 1;
+    std::vector<int> all(static_cast<size_t>(F.rows()));
+    for (Eigen::Index f = 0; f < F.rows(); ++f) all[size_t(f)] = int(f);
+    store(unit_box_of_used(V, F, unit), F, int(V.rows()), {all}, options, result);
+    // The layout is the kept pass, as stored: its number, timings and solver stay.
+    const PassMetrics measured = result.layout;
+    result.layout = result.disk_passes.at(size_t(result.chosen_pass));
+    copy_measures(measured, result.layout);
+    result.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
+    return result;
+  };
+  const bool split_disk = !whole.error && options.non_disk == NonDisk::Atlas &&
+                          needs_split(as_chart_pass(whole.passes.at(size_t(whole.chosen_pass))), options.max_stretch);
+  if (!whole.error && !split_disk) return disk_result();
+  if (!split_disk && (options.non_disk == NonDisk::Reject || !charts_can_fix(whole.error.code))) return failed(whole.error);
+  ChartsResult atlas = make_atlas(V, F, options);
+  // A disk whose atlas uses the texture worse than its single map keeps the single map.
+  if (split_disk && !atlas.error) {
+    ChartsResult disk = disk_result();
+    if (efficiency(disk) >= efficiency(atlas)) {
+      disk.notes.push_back("the disk stays one chart: cut into " + std::to_string(atlas.charts.size()) +
+                           " charts it had efficiency " + number_text(efficiency(atlas)) + " (coverage / L2^2) against " +
+                           number_text(efficiency(disk)));
+      return disk;
+    }
+  }
+  atlas.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
+  atlas.layout.seconds = atlas.seconds_total;
+  return atlas;
 }
 
 const char* to_string(NonDisk non_disk) {

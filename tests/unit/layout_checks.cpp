@@ -1,0 +1,67 @@
+#include "layout_checks.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace lowstretch {
+
+Eigen::Vector2d corner(const ChartsResult& r, Eigen::Index f, int k) { return r.corner_uv.block<1, 2>(f, 2 * k).transpose(); }
+
+double signed_area(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+  return 0.5 * ((b - a).x() * (c - a).y() - (c - a).x() * (b - a).y());
+}
+
+int overlapping_pixels(const ChartsResult& r) {
+  const int n = 1024;
+  std::vector<int> owner(size_t(n) * n, -1);
+  int overlaps = 0;
+  for (Eigen::Index f = 0; f < r.corner_uv.rows(); ++f) {
+    const Eigen::Vector2d a = corner(r, f, 0) * n, b = corner(r, f, 1) * n, c = corner(r, f, 2) * n;
+    const double area = signed_area(a, b, c);
+    if (!(area > 0)) continue;  // counted as flipped or degenerate elsewhere
+    const int x0 = std::max(0, int(std::floor(std::min({a.x(), b.x(), c.x()})))),
+              x1 = std::min(n - 1, int(std::ceil(std::max({a.x(), b.x(), c.x()}))));
+    const int y0 = std::max(0, int(std::floor(std::min({a.y(), b.y(), c.y()})))),
+              y1 = std::min(n - 1, int(std::ceil(std::max({a.y(), b.y(), c.y()}))));
+    const double eps = 1e-9 * area;
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) {
+        const Eigen::Vector2d p(x + 0.5, y + 0.5);
+        if (signed_area(a, b, p) > eps && signed_area(b, c, p) > eps && signed_area(c, a, p) > eps) {
+          int& o = owner[size_t(y) * n + size_t(x)];
+          if (o >= 0) ++overlaps;
+          o = int(f);
+        }
+      }
+  }
+  return overlaps;
+}
+
+void expect_valid_layout(const Eigen::MatrixXi& F, const ChartsResult& r) {
+  ASSERT_FALSE(r.error) << message(r.error);
+  ASSERT_EQ(r.corner_uv.rows(), F.rows());
+  ASSERT_EQ(r.corner_uv.cols(), 6);
+  ASSERT_TRUE(r.corner_uv.allFinite());
+  const double gutter = ChartOptions().gutter / ChartOptions().texture_size;  // 2 texels of 1024
+  EXPECT_GE(r.corner_uv.minCoeff(), gutter - 1e-15);
+  EXPECT_LE(r.corner_uv.maxCoeff(), 1 - gutter + 1e-15);
+  int not_positive = 0;
+  for (Eigen::Index f = 0; f < F.rows(); ++f) not_positive += !(signed_area(corner(r, f, 0), corner(r, f, 1), corner(r, f, 2)) > 0);
+  EXPECT_EQ(not_positive, 0);
+  EXPECT_EQ(r.layout.flipped, 0);
+  EXPECT_EQ(r.layout.degenerate, 0);
+  EXPECT_TRUE(std::isfinite(r.layout.l2_stretch));
+  EXPECT_EQ(overlapping_pixels(r), 0);
+  EXPECT_GT(r.coverage, 0.0);
+  EXPECT_LE(r.coverage, 1.0 + 1e-12);
+  ASSERT_EQ(r.face_chart.size(), size_t(F.rows()));
+  for (int c : r.face_chart) {
+    EXPECT_GE(c, 0);
+    EXPECT_LT(c, int(r.charts.size()));
+  }
+}
+
+}  // namespace lowstretch

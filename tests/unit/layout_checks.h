@@ -1,0 +1,21 @@
+// What every atlas layout must satisfy, checked from the texture coordinates alone: shared by the
+// chart and atlas tests.
+#pragma once
+#include <Eigen/Core>
+
+#include "atlas/charts.h"
+
+namespace lowstretch {
+
+Eigen::Vector2d corner(const ChartsResult& r, Eigen::Index f, int k);
+double signed_area(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c);
+
+// Pixel centres of a 1024 x 1024 raster strictly inside two triangles (of one chart or of two):
+// any overlap of the layout that covers a pixel centre.
+int overlapping_pixels(const ChartsResult& r);
+
+// Every face mapped, inside the default gutter, no flipped or zero-area triangle, no overlap,
+// finite stretch, every face in one of the charts.
+void expect_valid_layout(const Eigen::MatrixXi& F, const ChartsResult& r);
+
+}  // namespace lowstretch

@@ -1,0 +1,180 @@
+// The atlas (atlas/charts.h with NonDisk::Atlas or charts for a non-disk): charts cut by stretch
+// until they meet the bound, laid out as rectangles a gutter apart, the same atlas every run.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "atlas/charts.h"
+#include "generated_meshes.h"
+#include "layout_checks.h"
+
+using namespace lowstretch;
+
+namespace {
+
+ChartsResult atlas_of(const testmesh::Mesh& m, double max_stretch = ChartOptions().max_stretch, int max_charts = 1000) {
+  ChartOptions options;
+  options.non_disk = NonDisk::Atlas;
+  options.max_stretch = max_stretch;
+  options.max_charts = max_charts;
+  return parameterize_charts(m.V, m.F, options);
+}
+
+// A closed tube with a long thin arm: one chart of it stretches a lot.
+testmesh::Mesh sphere_with_bump() {
+  testmesh::Mesh m = testmesh::sphere(24, 32);
+  for (Eigen::Index v = 0; v < m.V.rows(); ++v) {
+    const double x = m.V(v, 0);
+    if (x > 0.5) m.V(v, 0) += 6 * (x - 0.5);  // pull one side out into an arm
+  }
+  return m;
+}
+
+// Closed parts of several shapes and sizes: charts solved on both cores at once.
+testmesh::Mesh several_parts() {
+  testmesh::Mesh m = sphere_with_bump();
+  const testmesh::Mesh parts[] = {testmesh::torus(24, 12), testmesh::sphere(10, 16), testmesh::double_torus()};
+  for (int i = 0; i < 3; ++i) {
+    const Eigen::Index v0 = m.V.rows(), f0 = m.F.rows();
+    m.V.conservativeResize(v0 + parts[i].V.rows(), 3);
+    m.F.conservativeResize(f0 + parts[i].F.rows(), 3);
+    m.V.bottomRows(parts[i].V.rows()) = (parts[i].V * (0.5 + i)).rowwise() + Eigen::RowVector3d(10 * (i + 1), 0, 0);
+    m.F.bottomRows(parts[i].F.rows()) = (parts[i].F.array() + int(v0)).matrix();
+  }
+  return m;
+}
+
+bool has_note_containing(const ChartsResult& r, const std::string& text) {
+  return std::any_of(r.notes.begin(), r.notes.end(), [&](const std::string& n) { return n.find(text) != std::string::npos; });
+}
+
+}  // namespace
+
+TEST(Atlas, SameInputGivesTheSameAtlasByteForByte) {
+  const testmesh::Mesh m = several_parts();
+  const ChartsResult a = atlas_of(m), b = atlas_of(m);
+  ASSERT_FALSE(a.error) << message(a.error);
+  ASSERT_GT(a.charts.size(), 2u);  // worked on several charts, on both cores
+  ASSERT_EQ(a.corner_uv.size(), b.corner_uv.size());
+  EXPECT_EQ(std::memcmp(a.corner_uv.data(), b.corner_uv.data(), sizeof(double) * size_t(a.corner_uv.size())), 0);
+  EXPECT_EQ(a.face_chart, b.face_chart);
+}
+
+TEST(Atlas, EveryChartMeetsTheBoundOrANoteSaysWhy) {
+  for (const testmesh::Mesh& m : {sphere_with_bump(), testmesh::torus(32, 16), testmesh::double_torus()}) {
+    const ChartsResult r = atlas_of(m);
+    expect_valid_layout(m.F, r);
+    int above = 0;
+    for (size_t c = 0; c < r.charts.size(); ++c) {
+      EXPECT_EQ(r.charts[c].above_bound, !(r.charts[c].l2_stretch <= ChartOptions().max_stretch));
+      if (!r.charts[c].above_bound) continue;
+      ++above;
+      EXPECT_TRUE(has_note_containing(r, "chart " + std::to_string(c) + " (")) << "chart " << c;
+    }
+  }
+}
+
+TEST(Atlas, ChartLimitStopsTheSplittingAndSaysSo) {
+  const testmesh::Mesh m = sphere_with_bump();
+  const ChartsResult r = atlas_of(m, 1.01, 3);
+  expect_valid_layout(m.F, r);
+  EXPECT_LE(r.charts.size(), 3u);
+  EXPECT_TRUE(has_note_containing(r, "chart limit (3) stopped the splitting"));
+}
+
+TEST(Atlas, ChartsCoverEveryFaceExactlyOnce) {
+  const testmesh::Mesh m = sphere_with_bump();
+  const ChartsResult r = atlas_of(m);
+  ASSERT_FALSE(r.error) << message(r.error);
+  std::vector<int> faces(r.charts.size(), 0);
+  for (int c : r.face_chart) {
+    ASSERT_GE(c, 0);
+    ASSERT_LT(c, int(r.charts.size()));
+    ++faces[size_t(c)];
+  }
+  int total = 0;
+  for (size_t c = 0; c < r.charts.size(); ++c) {
+    EXPECT_EQ(faces[c], r.charts[c].faces) << "chart " << c;
+    total += r.charts[c].faces;
+  }
+  EXPECT_EQ(total, int(m.F.rows()));
+}
+
+// Charts lie in disjoint cells, so their bounding boxes are apart by the gutter along x or y, in
+// texels of the chosen texture; and the border of [0,1]^2 is a gutter away.
+TEST(Atlas, GutterBetweenChartsIsCountedInTexels) {
+  const testmesh::Mesh m = sphere_with_bump();
+  for (const auto& texture : std::vector<std::pair<int, double>>{{1024, 2}, {512, 4}, {4096, 1}}) {
+    ChartOptions options;
+    options.non_disk = NonDisk::Atlas;
+    options.texture_size = texture.first;
+    options.gutter = texture.second;
+    const ChartsResult r = parameterize_charts(m.V, m.F, options);
+    ASSERT_FALSE(r.error) << message(r.error);
+    const double g = texture.second / texture.first;
+    std::vector<Eigen::AlignedBox2d> box(r.charts.size());
+    for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+      for (int k = 0; k < 3; ++k) box[size_t(r.face_chart[size_t(f)])].extend(corner(r, f, k));
+    for (size_t a = 0; a < box.size(); ++a) {
+      EXPECT_GE(box[a].min().minCoeff(), g * (1 - 1e-6));
+      EXPECT_LE(box[a].max().maxCoeff(), 1 - g * (1 - 1e-6));
+      for (size_t b = a + 1; b < box.size(); ++b) {
+        const Eigen::Vector2d apart = (box[b].min() - box[a].max()).cwiseMax(box[a].min() - box[b].max());
+        EXPECT_GE(apart.maxCoeff(), g * (1 - 1e-6)) << "charts " << a << " and " << b << " at " << texture.first;
+      }
+    }
+  }
+}
+
+TEST(Atlas, DiskThatMeetsTheBoundIsTheDiskResult) {
+  const testmesh::Mesh m = testmesh::grid(12, [](double x, double y) { return 0.1 * std::sin(2 * x) * y; });
+  ChartOptions disk;
+  const ChartsResult one = parameterize_charts(m.V, m.F, disk);
+  ASSERT_FALSE(one.error) << message(one.error);
+  ASSERT_LE(one.layout.l2_stretch, ChartOptions().max_stretch);
+  const ChartsResult atlas = atlas_of(m);
+  ASSERT_FALSE(atlas.error) << message(atlas.error);
+  EXPECT_TRUE(atlas.input_is_disk);
+  EXPECT_EQ(atlas.charts.size(), 1u);
+  EXPECT_EQ(atlas.corner_uv, one.corner_uv);
+}
+
+TEST(Atlas, DiskAboveTheBoundIsCutAndStretchesLess) {
+  const testmesh::Mesh m = testmesh::without_face(sphere_with_bump(), 0);  // a disk with a long arm
+  const ChartsResult one = parameterize_charts(m.V, m.F, ChartOptions());
+  ASSERT_FALSE(one.error) << message(one.error);
+  ASSERT_GT(one.layout.l2_stretch, ChartOptions().max_stretch);
+  const ChartsResult atlas = atlas_of(m);
+  expect_valid_layout(m.F, atlas);
+  EXPECT_FALSE(atlas.input_is_disk);
+  EXPECT_GT(atlas.charts.size(), 1u);
+  EXPECT_LT(atlas.layout.l2_stretch, one.layout.l2_stretch);
+  EXPECT_GT(atlas.seam_length, 0.0);
+}
+
+TEST(Atlas, BoundAndChartLimitOutOfRangeAreRefusedByName) {
+  const testmesh::Mesh m = testmesh::grid(4);
+  const ChartsResult low = atlas_of(m, 0.9);
+  EXPECT_EQ(low.error.code, ErrorCode::InvalidOption);
+  EXPECT_NE(message(low.error).find("max_stretch"), std::string::npos) << message(low.error);
+  const ChartsResult none = atlas_of(m, 1.2, 0);
+  EXPECT_EQ(none.error.code, ErrorCode::InvalidOption);
+  EXPECT_NE(message(none.error).find("max_charts"), std::string::npos) << message(none.error);
+}
+
+// A tall cap cut in parts stretches more than as one square chart: it stays the disk's map.
+TEST(Atlas, DiskWhoseCutsDoNotPayStaysOneChart) {
+  const testmesh::Mesh m = testmesh::tall_cap(16, 32);
+  const ChartsResult one = parameterize_charts(m.V, m.F, ChartOptions());
+  ASSERT_FALSE(one.error) << message(one.error);
+  ASSERT_GT(one.layout.l2_stretch, ChartOptions().max_stretch);
+  const ChartsResult atlas = atlas_of(m);
+  ASSERT_FALSE(atlas.error) << message(atlas.error);
+  EXPECT_TRUE(atlas.input_is_disk);
+  EXPECT_EQ(atlas.corner_uv, one.corner_uv);
+  EXPECT_TRUE(has_note_containing(atlas, "the disk stays one chart")) << (atlas.notes.empty() ? "" : atlas.notes.back());
+}
