@@ -558,10 +558,6 @@ ChartsResult atlas_of(std::vector<SolvedChart> charts, const Eigen::MatrixXd& un
   return result;
 }
 
-// Texture efficiency (Sander et al. 2001): the share of the texture a chart covers per unit of
-// stretch, coverage / L2^2. What the atlas is chosen by.
-double efficiency(const ChartsResult& r) { return r.error ? -1 : r.coverage / (r.layout.l2_stretch * r.layout.l2_stretch); }
-
 // Any mesh as charts: its components, cut until they meet the bound, laid out; or one chart per
 // component if that uses the texture better.
 ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options) {
@@ -585,9 +581,9 @@ ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, cons
   ChartsResult result = atlas_of(std::move(leaves), unit_V, F, unit, int(V.rows()), options);
   if (!uncut.empty()) {
     ChartsResult whole = atlas_of(std::move(uncut), unit_V, F, unit, int(V.rows()), options);
-    if (efficiency(whole) >= efficiency(result)) {
+    if (texture_efficiency(whole) >= texture_efficiency(result)) {
       whole.notes.push_back("one chart per part: cut into " + std::to_string(cut_into) + " charts, the atlas had efficiency " +
-                            number_text(efficiency(result)) + " (coverage / L2^2) against " + number_text(efficiency(whole)));
+                            number_text(texture_efficiency(result)) + " (coverage / L2^2) against " + number_text(texture_efficiency(whole)));
       result = std::move(whole);
     }
   }
@@ -622,16 +618,26 @@ ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi
   // A disk whose atlas uses the texture worse than its single map keeps the single map.
   if (split_disk && !atlas.error) {
     ChartsResult disk = disk_result();
-    if (efficiency(disk) >= efficiency(atlas)) {
+    if (texture_efficiency(disk) >= texture_efficiency(atlas)) {
       disk.notes.push_back("the disk stays one chart: cut into " + std::to_string(atlas.charts.size()) +
-                           " charts it had efficiency " + number_text(efficiency(atlas)) + " (coverage / L2^2) against " +
-                           number_text(efficiency(disk)));
+                           " charts it had efficiency " + number_text(texture_efficiency(atlas)) + " (coverage / L2^2) against " +
+                           number_text(texture_efficiency(disk)));
       return disk;
     }
   }
   atlas.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
   atlas.layout.seconds = atlas.seconds_total;
   return atlas;
+}
+
+double texture_efficiency(const ChartsResult& r) {
+  return r.error ? -1 : r.coverage / (r.layout.l2_stretch * r.layout.l2_stretch);
+}
+
+double largest_chart_stretch(const ChartsResult& r) {
+  double largest = 0;
+  for (const Chart& c : r.charts) largest = std::max(largest, c.l2_stretch);
+  return largest;
 }
 
 const char* to_string(NonDisk non_disk) {

@@ -86,6 +86,12 @@ struct ChartsResult {
 // non-manifold or non-orientable input stays an error.
 ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options);
 
+// Texture efficiency (Sander et al. 2001): coverage / L2^2, the share of the texture used per unit
+// of stretch; -1 for a failed result.
+double texture_efficiency(const ChartsResult& result);
+// The highest L2 stretch of any one chart (0 for a failed result).
+double largest_chart_stretch(const ChartsResult& result);
+
 const char* to_string(NonDisk non_disk);
 
 }  // namespace lowstretch

@@ -37,7 +37,7 @@ namespace {
 // The enum entries follow the core's enum order.
 const BoundaryShape kBoundaryValues[] = {BoundaryShape::Square, BoundaryShape::Circle, BoundaryShape::Natural};
 const InitialWeights kWeightsValues[] = {InitialWeights::Floater, InitialWeights::MeanValue, InitialWeights::Harmonic};
-const NonDisk kNonDiskValues[] = {NonDisk::Reject, NonDisk::Charts};
+const NonDisk kNonDiskValues[] = {NonDisk::Reject, NonDisk::Charts, NonDisk::Atlas};
 
 Parameters make_parameters() {
   const ChartOptions chart_defaults;
@@ -59,12 +59,18 @@ Parameters make_parameters() {
                     "Weights of the initial map U0: Floater's shape-preserving weights (the "
                     "paper's choice), mean value weights, or harmonic (cotangent) weights, "
                     "which can be negative and are offered for comparison only."},
-      EnumParameter{"nonDisk", 0, {"Reject", "Make charts"}, "Non-disk input",
+      EnumParameter{"nonDisk", 0, {"Reject", "Make charts", "Atlas for any mesh"}, "Non-disk input",
                     "What to do with a mesh that is not a disk (holes, closed, handles, several "
-                    "parts): reject it with the reason, or make charts: every part becomes one "
-                    "disk chart (holes closed virtually, closed or higher-genus parts cut along "
-                    "short seams), parameterized the same way and packed into the unit square. "
+                    "parts): reject it with the reason, or make charts: a low-stretch atlas. Every "
+                    "part becomes a chart (holes closed virtually, closed parts cut along short "
+                    "seams), a chart that stretches more than Max chart stretch is cut in two "
+                    "and mapped again, every chart fills a rectangle and the rectangles tile the "
+                    "texture a gutter apart. Make charts keeps a disk as one chart (the paper's "
+                    "map); Atlas for any mesh cuts a disk too when that uses the texture better. "
                     "Non-manifold or inconsistently oriented meshes are rejected either way."},
+      FloatParameter{"maxStretch", chart_defaults.max_stretch, "Max chart stretch",
+                     "Charts: a chart whose L2 stretch is above this (at least 1) is cut in two. "
+                     "Lower gives less stretch, more charts and longer seams."},
       IntParameter{"textureSize", chart_defaults.texture_size, "Texture size",
                    "Side in texels of the texture the map is made for (the size you give "
                    "Transfer: Vertex Color to Texture): the gutter is measured in its texels."},
@@ -122,6 +128,7 @@ Error make_options(const ParameterValues& v, ChartOptions& charts) {
   options.exponent = v.exponent;
   options.max_passes = v.max_passes;
   charts.non_disk = kNonDiskValues[v.non_disk];
+  charts.max_stretch = v.max_stretch;
   charts.texture_size = v.texture_size;
   charts.gutter = v.gutter;
   options.refine = v.refine;
@@ -134,15 +141,16 @@ std::string label_of(const std::string& option) {
   if (option == "max_passes") return p.max_passes.label;
   if (option == "texture_size") return p.texture_size.label;
   if (option == "gutter") return p.gutter.label;
+  if (option == "max_stretch") return p.max_stretch.label;
   return option;
 }
 
 std::string header_line(int vertices, int faces, const ChartOptions& charts) {
   const Options& options = charts.disk;
   return format("%s: %d vertices, %d faces; boundary %s, initial weights %s, exponent %g, max passes %d, non-disk input %s, "
-                "texture %d, gutter %g texels, refine %s",
+                "max chart stretch %g, texture %d, gutter %g texels, refine %s",
                 kFilterName, vertices, faces, to_string(options.boundary), to_string(options.weights), options.exponent,
-                options.max_passes, to_string(charts.non_disk), charts.texture_size, charts.gutter,
+                options.max_passes, to_string(charts.non_disk), charts.max_stretch, charts.texture_size, charts.gutter,
                 options.refine ? "on" : "off");
 }
 
@@ -175,6 +183,8 @@ std::vector<OutputValue> output_values(const ChartsResult& charts) {
       integer("charts", int(charts.charts.size())),
       real("seam_length", charts.seam_length),
       real("coverage", charts.coverage),
+      real("efficiency", texture_efficiency(charts)),
+      real("max_chart_stretch", largest_chart_stretch(charts)),
       integer("subtexel_triangles", charts.subtexel_triangles),
   };
 }

@@ -60,6 +60,7 @@ struct Parameters {
   IntParameter max_passes;
   EnumParameter weights;
   EnumParameter non_disk;
+  FloatParameter max_stretch;
   IntParameter texture_size;
   FloatParameter gutter;
   BoolParameter refine;
@@ -74,7 +75,9 @@ QStringList entries(const EnumParameter& p);
 struct ParameterValues {
   int boundary, weights;
   double exponent;
-  int max_passes, non_disk, texture_size;
+  int max_passes, non_disk;
+  double max_stretch;
+  int texture_size;
   double gutter;
   bool refine;
 };
@@ -92,6 +95,7 @@ void add_parameters(List& list) {
   list.addParam(Int(p.max_passes.name, p.max_passes.default_value, p.max_passes.label, p.max_passes.tooltip));
   list.addParam(Enum(p.weights.name, p.weights.default_index, entries(p.weights), p.weights.label, p.weights.tooltip));
   list.addParam(Enum(p.non_disk.name, p.non_disk.default_index, entries(p.non_disk), p.non_disk.label, p.non_disk.tooltip));
+  list.addParam(Float(p.max_stretch.name, Scalar(p.max_stretch.default_value), p.max_stretch.label, p.max_stretch.tooltip));
   list.addParam(Int(p.texture_size.name, p.texture_size.default_value, p.texture_size.label, p.texture_size.tooltip));
   list.addParam(Float(p.gutter.name, Scalar(p.gutter.default_value), p.gutter.label, p.gutter.tooltip));
   list.addParam(Bool(p.refine.name, p.refine.default_value, p.refine.label, p.refine.tooltip));
@@ -103,8 +107,8 @@ template <class List>
 Error options_from(const List& values, ChartOptions& options) {
   const Parameters& p = parameters();
   return make_options({values.getEnum(p.boundary.name), values.getEnum(p.weights.name), values.getFloat(p.exponent.name),
-                       values.getInt(p.max_passes.name), values.getEnum(p.non_disk.name), values.getInt(p.texture_size.name),
-                       values.getFloat(p.gutter.name), values.getBool(p.refine.name)},
+                       values.getInt(p.max_passes.name), values.getEnum(p.non_disk.name), values.getFloat(p.max_stretch.name),
+                       values.getInt(p.texture_size.name), values.getFloat(p.gutter.name), values.getBool(p.refine.name)},
                       options);
 }
 
@@ -154,7 +158,7 @@ Run run(const MeshType& m, const ChartOptions& options, const std::function<void
   }
   if (run.result.error) {
     run.error = message(run.result.error, label_of);
-    if (charts_would_help(run.result.error.code)) run.error += " (set \"Non-disk input\" to Make charts)";
+    if (charts_would_help(run.result.error.code)) run.error += " (set \"Non-disk input\" to Make charts or Atlas for any mesh)";
     return run;
   }
   for (const std::string& line : result_lines(run.result)) log(line);

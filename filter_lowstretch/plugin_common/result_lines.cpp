@@ -50,8 +50,9 @@ std::vector<std::string> chart_lines(const ChartsResult& result) {
   const size_t shown = 20;  // a mesh of many parts would flood the log
   for (size_t i = 0; i < result.charts.size() && i < shown; ++i) {
     const Chart& c = result.charts[i];
-    lines.push_back(format("chart %zu: %d faces, %d holes closed, seam length %.6g, L2 stretch %.6g, kept pass %d of %d",
-                           i, c.faces, c.closed_holes, c.seam_length, c.l2_stretch, c.chosen_pass, c.passes - 1));
+    lines.push_back(format("chart %zu: %d faces, %d holes closed, seam length %.6g, L2 stretch %.6g, Linf stretch %.6g, "
+                           "kept pass %d of %d",
+                           i, c.faces, c.closed_holes, c.seam_length, c.l2_stretch, c.linf_stretch, c.chosen_pass, c.passes - 1));
   }
   if (result.charts.size() > shown) lines.push_back(format("... and %zu more charts", result.charts.size() - shown));
   for (const LayoutPass& lp : result.passes)
@@ -59,10 +60,12 @@ std::vector<std::string> chart_lines(const ChartsResult& result) {
                            "flipped %d, degenerate %d",
                            lp.pass, lp.l2_stretch, lp.flipped, lp.degenerate));
   const PassMetrics& p = result.layout;
-  lines.push_back(format("%zu charts, seam length %.6g, coverage %.4f; whole layout: L2 stretch %.6g, Linf stretch %.6g, "
+  lines.push_back(format("%zu charts (largest chart L2 stretch %.6g), seam length %.6g, coverage %.4f, efficiency %.4f "
+                         "(coverage / L2^2); whole layout: L2 stretch %.6g, Linf stretch %.6g, "
                          "edge distortion %.6g, angle distortion %.6g, area distortion %.6g, flipped %d, degenerate %d; "
                          "total %.3f s",
-                         result.charts.size(), result.seam_length, result.coverage, p.l2_stretch, p.linf_stretch,
+                         result.charts.size(), largest_chart_stretch(result), result.seam_length, result.coverage,
+                         texture_efficiency(result), p.l2_stretch, p.linf_stretch,
                          p.edge_distortion, p.angle_distortion, p.area_distortion, p.flipped, p.degenerate,
                          result.seconds_total));
   lines.push_back(stored_line(result));

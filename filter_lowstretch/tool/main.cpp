@@ -180,7 +180,8 @@ void print_json(const Arguments& a, const Eigen::MatrixXd& V, const Eigen::Matri
   if (a.charts.non_disk != NonDisk::Reject) {
     o << ",\n \"non_disk\": \"" << to_string(a.charts.non_disk) << "\", \"input_is_disk\": " << (c.input_is_disk ? "true" : "false")
       << ", \"max_stretch\": " << number(a.charts.max_stretch) << ", \"chart_count\": " << c.charts.size()
-      << ", \"seam_length\": " << number(c.seam_length) << ",\n \"charts\": [";
+      << ", \"seam_length\": " << number(c.seam_length) << ", \"efficiency\": " << number(texture_efficiency(c))
+      << ", \"max_chart_stretch\": " << number(largest_chart_stretch(c)) << ",\n \"charts\": [";
     for (size_t i = 0; i < c.charts.size(); ++i) {
       const Chart& ch = c.charts[i];
       o << (i ? ",\n  " : "\n  ") << "{\"faces\": " << ch.faces << ", \"closed_holes\": " << ch.closed_holes

@@ -46,7 +46,8 @@ PASS_RE = re.compile(rf"pass (\d+): L2 stretch {NUM}, Linf stretch {NUM}, edge d
 KEPT_RE = re.compile(rf"kept pass (\d+) \(L2 stretch {NUM}\); stop reason: (.+?); total {NUM} s")
 HEADER_RE = re.compile(rf"{FILTER}: (\d+) vertices, (\d+) faces;")
 FAIL_RE = re.compile(rf"{FILTER} failed: (.*)")
-CHARTS_RE = re.compile(rf"(\d+) charts, seam length {NUM}, coverage {NUM}; whole layout: L2 stretch {NUM}, "
+CHARTS_RE = re.compile(rf"(\d+) charts \(largest chart L2 stretch {NUM}\), seam length {NUM}, coverage {NUM}, "
+                       rf"efficiency {NUM} \(coverage / L2\^2\); whole layout: L2 stretch {NUM}, "
                        rf"Linf stretch {NUM}, edge distortion {NUM}, angle distortion {NUM}, area distortion {NUM}, "
                        rf"flipped (\d+), degenerate (\d+)")
 STORED_RE = re.compile(rf"texture coordinates as stored \(float\): L2 stretch {NUM}, Linf stretch {NUM}, "
@@ -472,9 +473,11 @@ def cmd_charts(args):
     summary = CHARTS_RE.search(proc.stdout)
     if not check(summary is not None, "the log has the charts summary line"):
         return check
-    charts, seam, l2 = int(summary.group(1)), float(summary.group(2)), float(summary.group(4))
-    print(f"{name}: {charts} charts, seam length {seam}, L2 stretch {l2}")
-    check(int(summary.group(9)) == 0 and int(summary.group(10)) == 0, "the log reports no flipped and no degenerate triangle")
+    charts, seam, l2 = int(summary.group(1)), float(summary.group(3)), float(summary.group(6))
+    coverage, efficiency = float(summary.group(4)), float(summary.group(5))
+    print(f"{name}: {charts} charts, seam length {seam}, L2 stretch {l2}, coverage {coverage}, efficiency {efficiency}")
+    check(int(summary.group(11)) == 0 and int(summary.group(12)) == 0, "the log reports no flipped and no degenerate triangle")
+    check(rel_diff(efficiency, coverage / l2 ** 2) < 1e-3, f"efficiency is coverage / L2^2 ({coverage / l2 ** 2:.6g})")
 
     ply, ref = meshio.read_ply(out), meshio.read_ply(reference)
     check(ply.faces() == ref.faces(), f"the faces are the input's ({len(ref.faces())})")

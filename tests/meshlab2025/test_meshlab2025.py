@@ -71,8 +71,8 @@ def check_outputs(check, proc):
     expected = {"l2_stretch": "double", "linf_stretch": "double", "edge_distortion": "double",
                 "angle_distortion": "double", "area_distortion": "double", "flipped": "int", "degenerate": "int",
                 "kept_pass": "int", "passes": "int", "initial_l2_stretch": "double", "seconds": "double",
-                "charts": "int", "seam_length": "double", "coverage": "double",
-                "subtexel_triangles": "int"}
+                "charts": "int", "seam_length": "double", "coverage": "double", "efficiency": "double",
+                "max_chart_stretch": "double", "subtexel_triangles": "int"}
     if not check({k: t for k, (v, t) in outputs.items()} == expected,
                  f"applyFilter returns the output values {sorted(expected)} with their types"):
         return

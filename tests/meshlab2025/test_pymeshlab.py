@@ -33,7 +33,7 @@ GUTTER = 2 / 1024  # the default gutter (texels) over the default texture size: 
 KEYS = {"l2_stretch": float, "linf_stretch": float, "edge_distortion": float, "angle_distortion": float,
         "area_distortion": float, "flipped": int, "degenerate": int, "kept_pass": int, "passes": int,
         "initial_l2_stretch": float, "seconds": float, "charts": int, "seam_length": float, "coverage": float,
-        "subtexel_triangles": int}
+        "efficiency": float, "max_chart_stretch": float, "subtexel_triangles": int}
 
 
 class Checks:
@@ -156,6 +156,22 @@ def inside(args):
         check(wtc.shape == (3 * len(m.face_matrix()), 2) and wtc.min() >= GUTTER - 1e-6
               and wtc.max() <= 1 - GUTTER + 1e-6 and int((area_u <= 0).sum()) == 0,
               f"wedge texcoords 2 texels of 1024 inside [0,1]^2, no flipped or zero-area triangle ({int((area_u <= 0).sum())})")
+
+    # The atlas of the disk, cut where it stretches more than 1.1, at another texture size.
+    ms.load_new_mesh(args.disk)
+    atlas = ms.apply_filter(NAME, nondisk="Atlas for any mesh", maxstretch=1.1, texturesize=512, gutter=3)
+    m = ms.current_mesh()
+    wtc = m.wedge_tex_coord_matrix().astype(np.float64)
+    area_u, _, l2, _ = stretch(np, m.vertex_matrix(), m.face_matrix(), wtc)
+    check(set(atlas) == set(KEYS) and atlas["charts"] > 1 and abs(l2 - atlas["l2_stretch"]) <= 1e-9 * l2
+          and abs(atlas["efficiency"] - atlas["coverage"] / l2 ** 2) <= 1e-9 * atlas["efficiency"]
+          and atlas["efficiency"] > out["coverage"] / out["l2_stretch"] ** 2,
+          f"nondisk='Atlas for any mesh', maxstretch=1.1: {atlas['charts']} charts, L2 stretch {atlas['l2_stretch']:.6g} "
+          f"(recomputed {l2:.6g}), efficiency {atlas['efficiency']:.4g} = coverage / L2^2, above the single chart's "
+          f"{out['coverage'] / out['l2_stretch'] ** 2:.4g}")
+    check(wtc.min() >= 3 / 512 - 1e-6 and wtc.max() <= 1 - 3 / 512 + 1e-6 and int((area_u <= 0).sum()) == 0,
+          f"the atlas stays 3 texels of 512 inside [0,1]^2 ({wtc.min():.6g}, {wtc.max():.6g}), no flipped or "
+          f"zero-area triangle")
     return check
 
 
