@@ -14,11 +14,13 @@ const char* const kPythonName = "compute_texcoord_parametrization_low_stretch";
 const char* const kPluginName = "FilterLowStretch";
 const char* const kFilterInfo =
     "Computes a low-stretch parameterization of a mesh that is a topological disk (connected, "
-    "manifold, one boundary loop), or with <i>Non-disk input: Make charts</i> of any manifold, "
-    "oriented mesh: each connected component becomes a disk chart (holes other than the longest "
-    "boundary are closed virtually for the solve and stay holes; closed or higher-genus parts are "
-    "cut open along short seams), and the charts are scaled by their 3D area and packed into the "
-    "unit square. For a disk the boundary is mapped to a square, a circle or a free "
+    "manifold, one boundary loop), or with <i>Non-disk input: Make charts</i> a low-stretch atlas "
+    "of any manifold, oriented mesh (<i>Atlas for any mesh</i>: of a disk too): each connected "
+    "component becomes a disk chart (holes other than the longest boundary are closed virtually "
+    "for the solve and stay holes; closed or higher-genus parts are cut open along short seams), "
+    "each chart is mapped onto a rectangle, a chart that stretches more than <i>Max chart "
+    "stretch</i> is cut in two and mapped again, and the rectangles tile the texture a gutter "
+    "apart at one texel density. For a disk the boundary is mapped to a square, a circle or a free "
     "(natural) boundary, the interior starts from Floater's shape-preserving map, and each "
     "pass divides the weights by the vertex stretch and solves again, keeping the pass of "
     "lowest L2 stretch.<br>"

@@ -8,6 +8,8 @@ then bake the colours into a texture with MeshLab's own filter, and check the te
       per-triangle parameterizations baked the same way, for comparison.
   bake.py pymeshlab --plugin SO --venv DIR --mesh OFF|--generate NAME --work DIR
       pymeshlab 2025.7: the same three, with compute_texmap_from_color.
+  --atlas: our filter makes an atlas (Non-disk input: Atlas for any mesh), cut where the map
+      stretches more than Max chart stretch, instead of the disk's single chart.
   bake.py colour --mesh OFF --output PLY
       only gives the mesh the colour pattern (a stand-in for a scan's colours; the README uses it).
 
@@ -153,8 +155,12 @@ def run_2020(args, method, coloured):
     out = os.path.join(work, "baked.ply")
     mask = ["-m", "vc", "wt"]
     if method == "low-stretch":
+        script = ET.parse(os.path.join(args.resources, "lowstretch_bake.mlx"))
+        if args.atlas:  # "Atlas for any mesh"
+            [p.set("value", "2") for p in script.getroot().iter("Param") if p.get("name") == "nonDisk"]
+        script.write(os.path.join(work, "lowstretch_bake.mlx"))
         proc = e2e.meshlabserver(args.prefix, work, "bake.log", ["-i", source, "-o", out] + mask +
-                                 ["-s", os.path.join(args.resources, "lowstretch_bake.mlx")])
+                                 ["-s", os.path.join(work, "lowstretch_bake.mlx")])
         return out, os.path.join(work, "texture.png"), proc.stdout + proc.stderr
     if method == "trivial per-triangle":
         script = write_script(os.path.join(work, "script.mlx"), [
@@ -180,6 +186,8 @@ def run_pymeshlab_inside(args):
     import pymeshlab
     pymeshlab.load_plugin(os.path.abspath(args.plugin))
     name, params = PYMESHLAB_FILTERS[args.method]
+    if args.atlas and args.method == "low-stretch":
+        params = {"nondisk": "Atlas for any mesh"}
     ms = pymeshlab.MeshSet()
     ms.load_new_mesh(args.input)
     ms.apply_filter(name, **params)
@@ -201,7 +209,7 @@ def run_pymeshlab(args, method, coloured):
     work = os.path.join(args.work, method.replace(" ", "_"))
     os.makedirs(work, exist_ok=True)
     proc = subprocess.run([python, os.path.abspath(__file__), "pymeshlab", "--inside", "--method", method,
-                           "--plugin", args.plugin, "--input", coloured, "--work", work],
+                           "--plugin", args.plugin, "--input", coloured, "--work", work] + (["--atlas"] if args.atlas else []),
                           capture_output=True, text=True, errors="replace", timeout=1200)
     with open(os.path.join(work, "pymeshlab.log"), "w") as f:
         f.write(f"exit code {proc.returncode}\n--- stdout ---\n{proc.stdout}\n--- stderr ---\n{proc.stderr}")
@@ -243,6 +251,7 @@ def main():
     group.add_argument("--mesh", help="a disk mesh (OFF)")
     group.add_argument("--generate", choices=sorted(generate.DISKS), help="a generated disk")
     parser.add_argument("--work", help="work folder (meshlab2020, pymeshlab)")
+    parser.add_argument("--atlas", action="store_true", help="our filter makes an atlas (Atlas for any mesh)")
     parser.add_argument("--inside", action="store_true", help=argparse.SUPPRESS)
     parser.add_argument("--input", help=argparse.SUPPRESS)
     parser.add_argument("--method", help=argparse.SUPPRESS)
@@ -270,7 +279,8 @@ def main():
         mesh, texture, logs[method] = run(args, method, coloured)
         if check(os.path.isfile(mesh) and os.path.isfile(texture), f"{method}: baked mesh and texture written"):
             results[method] = measure(mesh, texture)
-    print(f"mesh {name}, texture {SIZE} x {SIZE}, MeshLab {'2020.09' if args.mode == 'meshlab2020' else '2025.7 (pymeshlab)'}")
+    print(f"mesh {name}, texture {SIZE} x {SIZE}, MeshLab {'2020.09' if args.mode == 'meshlab2020' else '2025.7 (pymeshlab)'}"
+          f"{', ours as an atlas' if args.atlas else ''}")
     report_and_check(check, args, results, logs)
     print(f"{len(check.failed)} check(s) failed" if check.failed else "all checks passed")
     return 1 if check.failed else 0
