@@ -234,6 +234,12 @@ bool better(const ChartPass& a, const ChartPass& b) {
 // better of its own rectangle (sides as long as its boundary arcs) and the square.
 void solve(SolvedChart& chart, const Options& options, double aspect) {
   solve_onto(chart, options, aspect);
+  if (chart.map.error.code == ErrorCode::SolverFailed && options.max_passes > 0) {
+    // A pass whose weights overflow on a tiny part: the initial map, which no weight breaks.
+    Options initial = options;
+    initial.max_passes = 0;
+    solve_onto(chart, initial, aspect);
+  }
   if (aspect != 0 || chart.map.error || std::abs(std::log(chart.aspect)) < 0.02) return;
   SolvedChart square;
   square.mesh = chart.mesh;  // small beside the solve

@@ -174,10 +174,11 @@ def read_off(path):
         raise ValueError(f"{path}: not an OFF file")
     nv, nf = int(words[1]), int(words[2])
     at = 4
+    stride = 7 if words[0] == "COFF" else 3  # COFF: RGBA after each vertex
     vertices = []
     for _ in range(nv):
         vertices.append(tuple(float(w) for w in words[at:at + 3]))
-        at += 3
+        at += stride
     faces = []
     for _ in range(nf):
         n = int(words[at])
