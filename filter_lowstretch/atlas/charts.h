@@ -31,7 +31,7 @@ struct ChartOptions {
   // A chart whose L2 stretch is above max_stretch, or that has a flipped or zero-area triangle,
   // is cut in two, until max_charts; charts of fewer than 2 x kSmallestChart faces stay whole.
   double max_stretch = 1.2;            // at least 1
-  int max_charts = 1000;               // at least 1
+  int max_charts = 100000;             // at least 1
 };
 constexpr int kSmallestChart = 50;
 

@@ -51,7 +51,7 @@ double bulge(double t, const std::vector<double>& kink_t) {
 }  // namespace
 
 Eigen::MatrixXd square_boundary(const DiskMesh& disk, const std::array<int, 4>& corners, const std::vector<int>& kinks,
-                                double aspect) {
+                                double aspect, const std::vector<int>& ear_tips, double ear_bulge) {
   static const double outward[4][2] = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
   const std::vector<double> arc = boundary_arc_lengths(disk);
   const int n = int(disk.boundary.size());
@@ -81,6 +81,15 @@ Eigen::MatrixXd square_boundary(const DiskMesh& disk, const std::array<int, 4>& 
       uv(i % n, 0) = a[0] + t * (c[0] - a[0]) + b * outward[side][0];
       uv(i % n, 1) = a[1] + t * (c[1] - a[1]) + b * outward[side][1];
     }
+  }
+  for (int tip : ear_tips) {  // pushed out from its chord, by a share of the chord's length
+    const Eigen::RowVector2d a = uv.row((tip + n - 1) % n), b = uv.row((tip + 1) % n);
+    const Eigen::RowVector2d chord = b - a;
+    const Eigen::RowVector2d outward(chord.y(), -chord.x());  // the interior is on the left of the loop
+    const Eigen::RowVector2d foot = a + chord * std::max(0.0, std::min(1.0, (uv.row(tip) - a).dot(chord) / chord.squaredNorm()));
+    const double height = (uv.row(tip) - foot).dot(outward.normalized());
+    const double wanted = ear_bulge * chord.norm();
+    if (chord.squaredNorm() > 0 && height < wanted) uv.row(tip) += (wanted - height) * outward.normalized();
   }
   const Eigen::RowVector2d lo = uv.colwise().minCoeff(), hi = uv.colwise().maxCoeff();
   return (uv.rowwise() - lo) / (hi - lo).maxCoeff();

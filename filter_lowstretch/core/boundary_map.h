@@ -22,9 +22,15 @@ Eigen::MatrixXd circle_boundary(const DiskMesh& disk);
 // A side that holds loop positions of `kinks` bulges outward, by at most kKinkBulge of its
 // length, as a concave polyline that bends at each of them: every interior edge joining two
 // points of that side with a kink strictly between them then spans a triangle of positive area
-// (the domain stays convex). The whole is fitted back into [0,1]^2.
+// (the domain stays convex). With ear_bulge > 0 the tip of an ear (a boundary triangle whose
+// third edge is interior) bulges further, to ear_bulge times its ear's chord: the ear then keeps
+// a fair share of its area, where the side's bulge alone leaves a sliver on a jagged boundary
+// (at the cost of a box a little larger than the square). The ears lie outside the convex
+// polygon through their chords, each over its own chord, so none overlaps.
+// The whole is fitted back into [0,1]^2.
 Eigen::MatrixXd square_boundary(const DiskMesh& disk, const std::array<int, 4>& corners,
-                                const std::vector<int>& kinks = {}, double aspect = 1);
+                                const std::vector<int>& kinks = {}, double aspect = 1,
+                                const std::vector<int>& ear_tips = {}, double ear_bulge = 0);
 // 0.8%: the square map then covers 0.98 of the texture with the default gutter on every shared
 // disk; less bulge makes the triangles at the kinks thinner (0.5% raised L2 on one disk from 1.44
 // to 1.69).

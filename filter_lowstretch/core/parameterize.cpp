@@ -29,6 +29,8 @@ Error check_options(const Options& o) {
   if (o.max_passes < 0 || o.max_passes > kMostPasses)
     return {ErrorCode::InvalidOption, 0, "must be from 0 to " + std::to_string(kMostPasses) + ", got " +
                                              std::to_string(o.max_passes), "max_passes"};
+  if (!(o.ear_bulge >= 0 && o.ear_bulge <= 1))
+    return {ErrorCode::InvalidOption, 0, "must be from 0 to 1, got " + number_text(o.ear_bulge), "ear_bulge"};
   if (!(o.rectangle_aspect == 0 || (o.rectangle_aspect >= 1.0 / 64 && o.rectangle_aspect <= 64)))
     return {ErrorCode::InvalidOption, 0, "must be 0 (natural) or from 1/64 to 64, got " + number_text(o.rectangle_aspect),
             "rectangle_aspect"};
@@ -59,7 +61,8 @@ Error boundary_positions(const DiskMesh& disk, const Options& options, Eigen::Ma
         notes.push_back(std::to_string(corners.collapsed_chords) +
                         " interior edges join two boundary vertices of one square side whatever the corners: "
                         "those sides bend outward slightly (at most 0.8% of their length) so that no triangle collapses");
-      boundary_uv = square_boundary(disk, corners.corners, corners.kinks, options.rectangle_aspect);
+      boundary_uv = square_boundary(disk, corners.corners, corners.kinks, options.rectangle_aspect, corners.ear_tips,
+                                    options.ear_bulge);
       return {};
     }
   }

@@ -198,7 +198,10 @@ SquareCorners choose_square_corners(const DiskMesh& disk, bool at_sharpest_turns
   if (best_cost == std::numeric_limits<double>::infinity()) {  // more separate ears than corners: kink the sides
     result.collapsed_chords = collapsed_chords(arcs, result.corners, n);
     for (const Arc& a : arcs)
-      if (!holds_a_corner(a, result.corners, n)) result.kinks.push_back((a.first + a.count / 2) % n);
+      if (!holds_a_corner(a, result.corners, n)) {
+        result.kinks.push_back((a.first + a.count / 2) % n);
+        if (a.count == 1) result.ear_tips.push_back(a.first);
+      }
     return result;
   }
   std::sort(best.begin(), best.end());

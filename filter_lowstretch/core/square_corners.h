@@ -15,6 +15,7 @@ struct SquareCorners {
   // outward there.
   int collapsed_chords = 0;
   std::vector<int> kinks;
+  std::vector<int> ear_tips;     // the kinks whose edge cuts off that one vertex (a boundary ear)
   bool moved = false;            // corners differ from the quarter-arc-length choice
 };
 
