@@ -546,6 +546,14 @@ void store(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, int vertex_r
   measure_layout(unit_V, F, vertex_rows, faces_of, result);
 }
 
+// "chart 3", "charts 1, 4, 9", "charts 1, 4, 9 and 812 more".
+std::string charts_text(const std::vector<int>& charts) {
+  std::string text = charts.size() == 1 ? "chart " : "charts ";
+  for (size_t i = 0; i < charts.size() && i < 3; ++i) text += (i ? ", " : "") + std::to_string(charts[i]);
+  if (charts.size() > 3) text += " and " + std::to_string(charts.size() - 3) + " more";
+  return text;
+}
+
 // The charts laid out and measured as the result.
 ChartsResult atlas_of(std::vector<SolvedChart> charts, const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, double unit,
                       int vertex_rows, const ChartOptions& options) {
@@ -554,10 +562,11 @@ ChartsResult atlas_of(std::vector<SolvedChart> charts, const Eigen::MatrixXd& un
   std::vector<std::vector<int>> faces_of;
   std::vector<std::vector<ChartPass>> passes;
   std::vector<int> kept;
-  std::vector<const char*> kept_whole;
+  std::vector<std::string> chart_notes;  // the core's notes, each with the charts it was given for
+  std::vector<std::vector<int>> noted;
   for (const SolvedChart& c : charts) {
-    kept_whole.push_back(c.kept_whole ? c.kept_whole : "its cell's shape stretched it");
     Chart chart;
+    chart.kept_whole = c.kept_whole ? c.kept_whole : "its cell's shape stretched it";
     chart.faces = int(c.faces.size());
     chart.closed_holes = c.mesh.closed_holes;
     chart.seam_length = c.mesh.seam_length * unit;
@@ -565,8 +574,16 @@ ChartsResult atlas_of(std::vector<SolvedChart> charts, const Eigen::MatrixXd& un
     chart.passes = int(c.map.passes.size());
     result.charts.push_back(chart);
     result.seam_length += chart.seam_length;
-    for (const std::string& note : c.map.notes)
-      result.notes.push_back("chart " + std::to_string(faces_of.size()) + ": " + note);
+    for (std::string note : c.map.notes) {
+      const size_t digits = note.find_first_not_of("0123456789");  // "6 interior edges ...": one note for all counts
+      if (digits > 0 && digits != std::string::npos && note[digits] == ' ') note = "some" + note.substr(digits);
+      const size_t k = size_t(std::find(chart_notes.begin(), chart_notes.end(), note) - chart_notes.begin());
+      if (k == chart_notes.size()) {
+        chart_notes.push_back(note);
+        noted.emplace_back();
+      }
+      noted[k].push_back(int(faces_of.size()));
+    }
     faces_of.push_back(c.faces);
     passes.push_back(c.passes);
     kept.push_back(c.map.chosen_pass);
@@ -574,13 +591,36 @@ ChartsResult atlas_of(std::vector<SolvedChart> charts, const Eigen::MatrixXd& un
   result.passes = layout_passes(passes, kept);
   result.seam_length += unit * length_between_charts(unit_V, F, result.face_chart);
   store(unit_V, F, vertex_rows, faces_of, options, result);
+  for (size_t k = 0; k < chart_notes.size(); ++k) result.notes.push_back(charts_text(noted[k]) + ": " + chart_notes[k]);
+  // Every chart above the bound is one note while they are few; past that, one note per reason.
+  std::vector<int> above;
   for (size_t c = 0; c < result.charts.size(); ++c) {
     Chart& chart = result.charts[c];
     chart.above_bound = !(chart.l2_stretch <= options.max_stretch);
-    if (chart.above_bound)
-      result.notes.push_back("chart " + std::to_string(c) + " (" + std::to_string(chart.faces) + " faces) keeps L2 stretch " +
-                             number_text(chart.l2_stretch) + " above " + number_text(options.max_stretch) + ": " +
-                             kept_whole[c]);
+    if (chart.above_bound) above.push_back(int(c));
+  }
+  const size_t listed = 10;
+  for (size_t k = 0; k < above.size() && (above.size() <= listed || k < listed); ++k) {
+    const Chart& chart = result.charts[size_t(above[k])];
+    result.notes.push_back("chart " + std::to_string(above[k]) + " (" + std::to_string(chart.faces) + " faces) keeps L2 stretch " +
+                           number_text(chart.l2_stretch) + " above " + number_text(options.max_stretch) + ": " +
+                           chart.kept_whole);
+  }
+  if (above.size() > listed) {
+    std::vector<std::string> reasons;
+    std::vector<std::vector<int>> of;
+    for (int c : above) {
+      const std::string reason = result.charts[size_t(c)].kept_whole;
+      const size_t k = size_t(std::find(reasons.begin(), reasons.end(), reason) - reasons.begin());
+      if (k == reasons.size()) {
+        reasons.push_back(reason);
+        of.emplace_back();
+      }
+      of[k].push_back(c);
+    }
+    for (size_t k = 0; k < reasons.size(); ++k)
+      result.notes.push_back(charts_text(of[k]) + " keep an L2 stretch above " + number_text(options.max_stretch) + ": " +
+                             reasons[k]);
   }
   return result;
 }

@@ -41,7 +41,8 @@ struct Chart {
   double seam_length = 0;   // 3D length of the seams cut in this chart, in the input's units
   double l2_stretch = 0;    // normalized L2 stretch of this chart alone in the final layout
   double linf_stretch = 0;  // its largest triangle stretch, normalized the same way
-  bool above_bound = false; // l2_stretch > max_stretch or invalid triangles (a note says why)
+  bool above_bound = false; // l2_stretch > max_stretch or invalid triangles
+  std::string kept_whole;   // why such a chart was not cut further (the notes sum them up)
   int chosen_pass = 0, passes = 0;
 };
 

@@ -187,6 +187,7 @@ void print_json(const Arguments& a, const Eigen::MatrixXd& V, const Eigen::Matri
       o << (i ? ",\n  " : "\n  ") << "{\"faces\": " << ch.faces << ", \"closed_holes\": " << ch.closed_holes
         << ", \"seam_length\": " << number(ch.seam_length) << ", \"l2_stretch\": " << number(ch.l2_stretch)
         << ", \"linf_stretch\": " << number(ch.linf_stretch) << ", \"above_bound\": " << (ch.above_bound ? "true" : "false")
+        << (ch.above_bound ? ", \"kept_whole\": " + quoted(ch.kept_whole) : std::string())
         << ", \"chosen_pass\": " << ch.chosen_pass << ", \"passes\": " << ch.passes << "}";
     }
     o << "],\n \"layout_passes\": [";

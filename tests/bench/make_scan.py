@@ -68,12 +68,12 @@ def main():
     low, high = V.min(0), V.max(0)
     size = np.linalg.norm(high - low)
     keep = np.ones(len(F), bool)
-    for _ in range(10):  # strips the scanner missed
+    for _ in range(8):  # strips the scanner missed
         normal = rng.normal(size=3)
         normal /= np.linalg.norm(normal)
         offset = normal @ (low + rng.random(3) * (high - low))
-        keep &= np.abs(centroid @ normal - offset) > 0.004 * size
-    for _ in range(60):  # occlusions
+        keep &= np.abs(centroid @ normal - offset) > 0.002 * size
+    for _ in range(40):  # occlusions
         centre = V[rng.integers(len(V))]
         keep &= np.linalg.norm(centroid - centre, axis=1) > rng.uniform(0.005, 0.02) * size
     F = drop_nonmanifold_vertices(F[keep], len(V))
