@@ -625,6 +625,20 @@ ChartsResult atlas_of(std::vector<SolvedChart> charts, const Eigen::MatrixXd& un
   return result;
 }
 
+// What one chart per part could reach at best, from the parts' maps while deciding (U1; the
+// layout's further passes lower L2 by some percent): coverage 1 over their L2^2.
+double best_possible_efficiency(const std::vector<SolvedChart>& parts) {
+  double weighted = 0, area = 0;
+  for (const SolvedChart& c : parts) {
+    if (c.kept.flipped + c.kept.degenerate > 0) return 0;
+    weighted += c.kept.area_3d * c.kept.l2_stretch * c.kept.l2_stretch;
+    area += c.kept.area_3d;
+  }
+  return weighted > 0 ? area / weighted : 0;
+}
+// An atlas this much more efficient than that bound skips laying out one chart per part.
+const double kClearlyBetter = 1.25;
+
 // Any mesh as charts: its components, cut until they meet the bound, laid out; or one chart per
 // component if that uses the texture better.
 ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options) {
@@ -646,7 +660,7 @@ ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, cons
   if (Error e = split_until_bounded(unit_V, F, std::move(components), options, leaves, uncut, notes)) return failed(e);
   const size_t cut_into = leaves.size();
   ChartsResult result = atlas_of(std::move(leaves), unit_V, F, unit, int(V.rows()), options);
-  if (!uncut.empty()) {
+  if (!uncut.empty() && !(texture_efficiency(result) > kClearlyBetter * best_possible_efficiency(uncut))) {
     ChartsResult whole = atlas_of(std::move(uncut), unit_V, F, unit, int(V.rows()), options);
     if (texture_efficiency(whole) > texture_efficiency(result) || (texture_efficiency(whole) == texture_efficiency(result) &&
                                                                    whole.layout.flipped + whole.layout.degenerate <
