@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -254,17 +255,30 @@ void solve(SolvedChart& chart, const Options& options, double aspect) {
   if (!square.map.error && better(square.kept, chart.kept)) chart = std::move(square);
 }
 
-// Runs job(i) for i < count on up to `threads` threads, each taking every threads-th index, so
-// that which thread computes what never depends on timing.
-void for_each_index(int count, const std::function<void(int)>& job) {
+// Runs job(i) for i < count on up to 8 threads, each taking the next index left, in `order`
+// (largest charts first, so that no thread is left with a big one at the end). A job's result
+// depends on its index alone, never on the thread or the timing, so the atlas is the same
+// every run.
+void for_each_index(int count, const std::function<void(int)>& job, const std::vector<int>& order = {}) {
   const int threads = std::max(1, std::min<int>(int(std::thread::hardware_concurrency()), std::min(count, 8)));
+  std::atomic<int> next{0};
+  const auto work = [&] {
+    for (int k = next++; k < count; k = next++) job(order.empty() ? k : order[size_t(k)]);
+  };
   std::vector<std::thread> workers;
-  for (int t = 1; t < threads; ++t)
-    workers.emplace_back([&, t] {
-      for (int i = t; i < count; i += threads) job(i);
-    });
-  for (int i = 0; i < count; i += threads) job(i);
+  for (int t = 1; t < threads; ++t) workers.emplace_back(work);
+  work();
   for (std::thread& w : workers) w.join();
+}
+
+// The indices of charts, most faces first (ties by index).
+std::vector<int> largest_first(const std::vector<SolvedChart>& charts, size_t first, size_t end) {
+  std::vector<int> order;
+  for (size_t i = first; i < end; ++i) order.push_back(int(i - first));
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return charts[first + size_t(a)].faces.size() > charts[first + size_t(b)].faces.size();
+  });
+  return order;
 }
 
 // The parts of a chart, each with its mesh built; empty if the chart cannot be cut into parts
@@ -333,7 +347,8 @@ Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
   Options deciding = options.disk;
   deciding.max_passes = std::min(deciding.max_passes, 1);
   for (size_t first = 0, end = tree.nodes.size(); first < end; first = end, end = tree.nodes.size()) {
-    for_each_index(int(end - first), [&](int i) { solve(tree.nodes[first + size_t(i)], deciding, 0); });
+    for_each_index(int(end - first), [&](int i) { solve(tree.nodes[first + size_t(i)], deciding, 0); },
+                   largest_first(tree.nodes, first, end));
     for (size_t i = first; i < end; ++i) {
       if (tree.nodes[i].map.error) return tree.nodes[i].map.error;
       if (!needs_split(tree.nodes[i].kept, options.max_stretch)) continue;
@@ -414,7 +429,7 @@ Error lay_out(std::vector<SolvedChart>& charts, const ChartOptions& options, Eig
     const double fits = turned[size_t(i)] ? 1 / cell : cell;
     const double wanted = std::min(c.aspect * kMostCellMismatch, std::max(c.aspect / kMostCellMismatch, fits));
     if (std::abs(std::log(wanted / c.aspect)) > 0.02) solve(c, options.disk, wanted);
-  });
+  }, largest_first(charts, 0, charts.size()));
   result.corner_uv.resize(face_count, 6);
   result.face_chart.assign(size_t(face_count), 0);
   for (size_t c = 0; c < charts.size(); ++c) {
