@@ -8,6 +8,7 @@
 #include <functional>
 #include <limits>
 #include <thread>
+#include <utility>
 
 #include "boundary_loops.h"
 #include "close_holes.h"
@@ -198,8 +199,9 @@ struct SolvedChart {
   Result map;
   std::vector<ChartPass> passes;
   ChartPass kept;          // passes[map.chosen_pass]
-  double aspect = 1;       // of the rectangle it is mapped onto, width / height
+  Eigen::AlignedBox2d box; // of the real faces' UV: the rectangle it is mapped onto
   const char* kept_whole = nullptr;  // why a chart above the bound was not cut
+  double aspect() const { return box.sizes().y() > 0 ? box.sizes().x() / box.sizes().y() : 1; }  // width / height
 };
 
 // The tips of a chart's boundary ears go a quarter of their chord out of the rectangle: a cut
@@ -226,15 +228,14 @@ void solve_onto(SolvedChart& chart, Options options, double aspect) {
   chart.map = parameterize(chart.mesh.V, chart.mesh.F, options);
   if (chart.map.error) return;
   chart.kept = chart.passes.at(size_t(chart.map.chosen_pass));
-  Eigen::AlignedBox2d box;
+  chart.box.setEmpty();
   for (size_t j = 0; j < chart.faces.size(); ++j)
-    for (int k = 0; k < 3; ++k) box.extend(chart.map.uv.row(chart.mesh.F(Eigen::Index(j), k)).transpose());
-  chart.aspect = box.sizes().y() > 0 ? box.sizes().x() / box.sizes().y() : 1;
+    for (int k = 0; k < 3; ++k) chart.box.extend(chart.map.uv.row(chart.mesh.F(Eigen::Index(j), k)).transpose());
 }
 
+// Fewer flipped and zero-area triangles first, then lower L2 stretch (as parameterize ranks passes).
 bool better(const ChartPass& a, const ChartPass& b) {
-  return a.flipped + a.degenerate < b.flipped + b.degenerate ||
-         (a.flipped + a.degenerate == b.flipped + b.degenerate && a.l2_stretch < b.l2_stretch);
+  return std::make_pair(a.flipped + a.degenerate, a.l2_stretch) < std::make_pair(b.flipped + b.degenerate, b.l2_stretch);
 }
 
 // The method on a chart whose mesh is built, onto a rectangle of `aspect`; aspect 0: onto the
@@ -247,7 +248,7 @@ void solve(SolvedChart& chart, const Options& options, double aspect) {
     initial.max_passes = 0;
     solve_onto(chart, initial, aspect);
   }
-  if (aspect != 0 || chart.map.error || std::abs(std::log(chart.aspect)) < 0.02) return;
+  if (aspect != 0 || chart.map.error || std::abs(std::log(chart.aspect())) < 0.02) return;
   SolvedChart square;
   square.mesh = chart.mesh;  // small beside the solve
   square.faces = chart.faces;
@@ -306,22 +307,18 @@ struct ChartTree {
 // that pays only after further cuts is kept: the leaves are compared, not the first parts.
 void undo_cuts_that_did_not_pay(ChartTree& tree) {
   const size_t n = tree.nodes.size();
-  std::vector<double> weighted(n, 0.0), area(n, 0.0);  // over each node's leaves: sum A L2^2, sum A
+  std::vector<double> weighted(n, 0.0);  // over each node's leaves: sum A L2^2 (the leaves cover its area)
   for (size_t i = n; i-- > 0;) {
     const ChartPass& alone = tree.nodes[i].kept;
     const bool valid = alone.flipped + alone.degenerate == 0;
     const double own = valid ? alone.area_3d * alone.l2_stretch * alone.l2_stretch : kInf;
     if (!tree.parts[i].empty()) {
-      for (int p : tree.parts[i]) {
-        weighted[i] += weighted[size_t(p)];
-        area[i] += area[size_t(p)];
-      }
+      for (int p : tree.parts[i]) weighted[i] += weighted[size_t(p)];
       if (!(own <= weighted[i]) || !valid) continue;  // an invalid chart stays cut
       tree.parts[i].clear();
       tree.nodes[i].kept_whole = "its parts stretched more";
     }
     weighted[i] = own;
-    area[i] = alone.area_3d;
   }
 }
 
@@ -407,7 +404,7 @@ Error lay_out(std::vector<SolvedChart>& charts, const ChartOptions& options, Eig
   std::vector<double> preferred;
   // Cells no longer than four times their width, whatever the chart: a long thin cell has no
   // room for its gutter (the chart then fills part of it, kMostCellMismatch).
-  for (const SolvedChart& c : charts) preferred.push_back(std::min(4.0, std::max(0.25, c.aspect)));
+  for (const SolvedChart& c : charts) preferred.push_back(std::min(4.0, std::max(0.25, c.aspect())));
   std::vector<Eigen::AlignedBox2d> cells;
   for (double texels = 2 * options.gutter + 4;; texels *= 1.5) {
     const double least = total * texels * texels / (double(options.texture_size) * options.texture_size);
@@ -423,12 +420,12 @@ Error lay_out(std::vector<SolvedChart>& charts, const ChartOptions& options, Eig
   for_each_index(int(charts.size()), [&](int i) {
     SolvedChart& c = charts[size_t(i)];
     const double cell = cells[size_t(i)].sizes().x() / cells[size_t(i)].sizes().y();
-    turned[size_t(i)] = std::abs(std::log(c.aspect * cell)) < std::abs(std::log(c.aspect / cell));
+    turned[size_t(i)] = std::abs(std::log(c.aspect() * cell)) < std::abs(std::log(c.aspect() / cell));
     // A cell far from the chart's shape (a small chart beside a large one gets a strip) is
     // filled only in part: stretching the chart to fit would cost more than the empty texels.
     const double fits = turned[size_t(i)] ? 1 / cell : cell;
-    const double wanted = std::min(c.aspect * kMostCellMismatch, std::max(c.aspect / kMostCellMismatch, fits));
-    if (std::abs(std::log(wanted / c.aspect)) > 0.02) solve(c, options.disk, wanted);
+    const double wanted = std::min(c.aspect() * kMostCellMismatch, std::max(c.aspect() / kMostCellMismatch, fits));
+    if (std::abs(std::log(wanted / c.aspect())) > 0.02) solve(c, options.disk, wanted);
   }, largest_first(charts, 0, charts.size()));
   result.corner_uv.resize(face_count, 6);
   result.face_chart.assign(size_t(face_count), 0);
@@ -436,9 +433,7 @@ Error lay_out(std::vector<SolvedChart>& charts, const ChartOptions& options, Eig
     if (charts[c].map.error) return charts[c].map.error;
     const ChartMesh& mesh = charts[c].mesh;
     const Eigen::MatrixXd& uv = charts[c].map.uv;
-    Eigen::AlignedBox2d box;
-    for (size_t j = 0; j < charts[c].faces.size(); ++j)
-      for (int k = 0; k < 3; ++k) box.extend(uv.row(mesh.F(Eigen::Index(j), k)).transpose());
+    const Eigen::AlignedBox2d& box = charts[c].box;
     Eigen::AlignedBox2d target = cells[c];
     target.min().array() += inset;
     target.max().array() -= inset;
