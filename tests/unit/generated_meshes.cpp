@@ -98,6 +98,30 @@ Mesh torus(int rings, int sectors) {
   return from_lists(v, f);
 }
 
+Mesh jagged_band() {
+  const int nx = 40, ny = 16;
+  std::vector<Eigen::RowVector3d> v;
+  std::vector<Eigen::RowVector3i> f;
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) {
+      const double x = 0.5 * i, y = 0.5 * j;
+      v.emplace_back(x, y, 0.4 * std::sin(0.3 * x) + 0.2 * std::cos(0.4 * y));
+    }
+  auto id = [](int i, int j) { return j * (nx + 1) + i; };
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const int a = id(i, j), b = id(i + 1, j), c = id(i, j + 1), d = id(i + 1, j + 1);
+      const bool even = (i + j) % 2 == 0;
+      for (const Eigen::RowVector3i& t : {even ? Eigen::RowVector3i(a, b, d) : Eigen::RowVector3i(a, b, c),
+                                          even ? Eigen::RowVector3i(a, d, c) : Eigen::RowVector3i(b, d, c)}) {
+        const double cx = (v[size_t(t(0))].x() + v[size_t(t(1))].x() + v[size_t(t(2))].x()) / 3;
+        const double cy = (v[size_t(t(0))].y() + v[size_t(t(1))].y() + v[size_t(t(2))].y()) / 3;
+        if (std::abs(cy - (2.5 + 0.2 * cx + 0.6 * std::sin(0.5 * cx + 1))) < 0.4) f.push_back(t);
+      }
+    }
+  return from_lists(v, f);
+}
+
 Mesh sphere(int rings, int sectors) {
   std::vector<Eigen::RowVector3d> v{{0, 0, 1}, {0, 0, -1}};
   std::vector<Eigen::RowVector3i> f;
