@@ -14,8 +14,7 @@ inline int next_half_edge(int h) { return (h / 3) * 3 + (h % 3 + 1) % 3; }
 inline int previous_half_edge(int h) { return (h / 3) * 3 + (h % 3 + 2) % 3; }  // ends at the tail of h
 
 // Every half-edge with the key of its undirected edge (smaller vertex in the high 32 bits),
-// sorted by key: the half-edges of one edge are neighbours. Sorting beats hashing at a million
-// half-edges.
+// sorted by key (ties by h): the half-edges of one edge are neighbours.
 std::vector<std::pair<uint64_t, int>> half_edges_by_edge(const Eigen::MatrixXi& F);
 
 // The opposite half-edge of each half-edge, -1 on the boundary. Meant for edge-manifold,
