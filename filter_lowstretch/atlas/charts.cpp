@@ -270,6 +270,13 @@ void solve(SolvedChart& chart, const Options& options, double aspect) {
   if (!square.map.error && better(square.kept, chart.kept)) chart = std::move(square);
 }
 
+// The method's options for `jobs` charts solved at once: with two or more, the threads keep the
+// cores busy, and each solve builds one multigrid hierarchy for u and v instead of two.
+Options for_jobs(Options options, size_t jobs) {
+  options.solver.columns_on_two_threads = jobs < 2;
+  return options;
+}
+
 // Runs job(i) for i < count on up to 8 threads, each taking the next index left, in `order`
 // (largest charts first, so that no thread is left with a big one at the end). A job's result
 // depends on its index alone, never on the thread or the timing, so the atlas is the same
@@ -358,7 +365,8 @@ Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
   Options deciding = options.disk;
   deciding.max_passes = std::min(deciding.max_passes, 1);
   for (size_t first = 0, end = tree.nodes.size(); first < end; first = end, end = tree.nodes.size()) {
-    for_each_index(int(end - first), [&](int i) { solve(tree.nodes[first + size_t(i)], deciding, 0); },
+    const Options round = for_jobs(deciding, end - first);
+    for_each_index(int(end - first), [&](int i) { solve(tree.nodes[first + size_t(i)], round, 0); },
                    largest_first(tree.nodes, first, end));
     for (size_t i = first; i < end; ++i) {
       if (tree.nodes[i].map.error) return tree.nodes[i].map.error;
@@ -425,7 +433,7 @@ void free_the_charts_that_stretch(std::vector<SolvedChart>& charts, const ChartO
     free.mesh = chart.mesh;
     free.faces = chart.faces;
     free.kept_whole = chart.kept_whole;
-    solve_onto(free, options.disk, 0, true);
+    solve_onto(free, for_jobs(options.disk, above.size()), 0, true);
     if (free.map.error || free.kept.flipped + free.kept.degenerate > 0) return;
     const double rectangle = chart.kept.flipped + chart.kept.degenerate > 0 ? 0 : 1 / (chart.kept.l2_stretch * chart.kept.l2_stretch);
     if (free.fill() / (free.kept.l2_stretch * free.kept.l2_stretch) > kFreeMustPay * rectangle) chart = std::move(free);
@@ -464,6 +472,7 @@ Error lay_out(std::vector<SolvedChart>& charts, const ChartOptions& options, Eig
     if (least * double(charts.size()) > total) return {ErrorCode::ChartsNotPacked, static_cast<long long>(charts.size()), ""};
   }
   std::vector<char> turned(charts.size(), 0);
+  const Options layout_options = for_jobs(options.disk, charts.size());
   for_each_index(int(charts.size()), [&](int i) {
     SolvedChart& c = charts[size_t(i)];
     const double cell = cells[size_t(i)].sizes().x() / cells[size_t(i)].sizes().y();
@@ -475,7 +484,7 @@ Error lay_out(std::vector<SolvedChart>& charts, const ChartOptions& options, Eig
     if (c.free_boundary) return;  // its shape is kept: it fills the part of its cell of that shape
     // A map made while deciding where to cut had fewer passes than the method allows.
     const bool cut_short = c.passes_allowed < options.disk.max_passes && c.map.stop_reason == StopReason::MaxPasses;
-    if (std::abs(std::log(wanted / c.aspect())) > 0.02 || cut_short) solve(c, options.disk, wanted);
+    if (std::abs(std::log(wanted / c.aspect())) > 0.02 || cut_short) solve(c, layout_options, wanted);
   }, largest_first(charts, 0, charts.size()));
   result.corner_uv.resize(face_count, 6);
   result.face_chart.assign(size_t(face_count), 0);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <system_error>
 #include <thread>
 
@@ -129,28 +130,42 @@ bool LaplacianSolver::solve_amg(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& x) 
   double setup[2] = {0, 0}, solving[2] = {0, 0};
   size_t iterations[2] = {0, 0};
   bool failed[2] = {false, false};
-  auto solve_column = [&](int c) {
+  auto solve_column = [&](int c, const AmgSolver* shared) {
     try {  // amgcl throws on a zero pivot or a breakdown; the direct solve takes over then
       Clock::time_point start = Clock::now();
-      const AmgSolver amg(system, prm);
+      std::unique_ptr<const AmgSolver> own;
+      if (!shared) own = std::make_unique<const AmgSolver>(system, prm);
       setup[c] = seconds_since(start);
       start = Clock::now();
       std::vector<double> b(rhs.col(c).data(), rhs.col(c).data() + n), u(x.col(c).data(), x.col(c).data() + n);
       double estimate = 0;
-      boost::tie(iterations[c], estimate) = amg(b, u);
+      boost::tie(iterations[c], estimate) = (shared ? *shared : *own)(b, u);
       std::copy(u.begin(), u.end(), x.col(c).data());
       solving[c] = seconds_since(start);
     } catch (...) {
       failed[c] = true;
     }
   };
-  try {
-    std::thread v_thread(solve_column, 1);
-    solve_column(0);
-    v_thread.join();
-  } catch (const std::system_error&) {  // no thread to be had: one after the other
-    solve_column(0);
-    solve_column(1);
+  if (!options_.columns_on_two_threads) {  // one hierarchy, u then v: half the setup
+    try {
+      const Clock::time_point start = Clock::now();
+      const AmgSolver amg(system, prm);
+      const double hierarchy = seconds_since(start);
+      solve_column(0, &amg);
+      solve_column(1, &amg);
+      setup[0] = hierarchy;
+    } catch (...) {
+      failed[0] = true;
+    }
+  } else {
+    try {
+      std::thread v_thread(solve_column, 1, nullptr);
+      solve_column(0, nullptr);
+      v_thread.join();
+    } catch (const std::system_error&) {  // no thread to be had: one after the other
+      solve_column(0, nullptr);
+      solve_column(1, nullptr);
+    }
   }
   report_.seconds_setup = std::max(setup[0], setup[1]);
   report_.seconds_solve = std::max(solving[0], solving[1]);

@@ -149,3 +149,20 @@ TEST(LaplacianSolver, OutOfRangeSettingsAreRejected) {
   const Result r = parameterize(m.V, m.F, o);
   EXPECT_EQ(r.error.code, ErrorCode::InvalidOption);
 }
+
+// u then v with one hierarchy (as the atlas solves its charts) gives the solution of u and v on
+// two threads, each with a hierarchy of its own: the same iteration on the same matrix.
+TEST(LaplacianSolver, OneHierarchyForBothColumnsSolvesTheSame) {
+  const testmesh::Mesh m = testmesh::tall_cap(60, 120);  // 7,201 vertices: above the direct-solve size
+  SolverOptions sequential = with(LinearSolver::Amg);
+  sequential.columns_on_two_threads = false;
+  const PassRun one = run(m, BoundaryShape::Square, sequential);
+  const PassRun two = run(m, BoundaryShape::Square, with(LinearSolver::Amg));
+  ASSERT_FALSE(one.result.error) << message(one.result.error);
+  ASSERT_EQ(one.uv.size(), two.uv.size());
+  for (size_t p = 0; p < one.uv.size(); ++p) {
+    EXPECT_EQ(one.result.passes[p].solver, LinearSolver::Amg) << "pass " << p;
+    EXPECT_FALSE(one.result.passes[p].solver_fell_back) << "pass " << p;
+    EXPECT_EQ(one.uv[p], two.uv[p]) << "pass " << p;
+  }
+}
