@@ -33,7 +33,9 @@ struct ChartOptions {
   double max_stretch = 1.2;            // at least 1
   int max_charts = 100000;             // at least 1
 };
-constexpr int kSmallestChart = 50;
+// Smaller charts cut coarse models better (cow efficiency 0.516 at 50, 0.624 at 15) at the cost
+// of more seams and gutters (the 769k-face scan: 0.617 at 50, 0.607 at 15, 0.592 at 8).
+constexpr int kSmallestChart = 15;
 
 struct Chart {
   int faces = 0;

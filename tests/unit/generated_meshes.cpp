@@ -98,8 +98,8 @@ Mesh torus(int rings, int sectors) {
   return from_lists(v, f);
 }
 
-Mesh jagged_band() {
-  const int nx = 40, ny = 16;
+Mesh jagged_band(int columns) {
+  const int nx = columns, ny = 16;
   std::vector<Eigen::RowVector3d> v;
   std::vector<Eigen::RowVector3i> f;
   for (int j = 0; j <= ny; ++j)
@@ -107,7 +107,7 @@ Mesh jagged_band() {
       const double x = 0.5 * i, y = 0.5 * j;
       v.emplace_back(x, y, 0.4 * std::sin(0.3 * x) + 0.2 * std::cos(0.4 * y));
     }
-  auto id = [](int i, int j) { return j * (nx + 1) + i; };
+  auto id = [nx](int i, int j) { return j * (nx + 1) + i; };
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
       const int a = id(i, j), b = id(i + 1, j), c = id(i, j + 1), d = id(i + 1, j + 1);

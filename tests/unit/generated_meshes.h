@@ -31,10 +31,10 @@ Mesh sphere(int rings, int sectors);
 Mesh punched_grid(int n, const std::vector<Eigen::RowVector2d>& centres, double radius);
 // Two tori, each without one face, joined by a three-sided tube between the two holes: closed, genus 2.
 Mesh double_torus();
-// A band a triangle or two wide cut out of a wavy 40 x 16 grid along its edges (the faces whose
-// centroid lies within 0.4 of a wavy centre line): a jagged sliver with many ears, as the strips of
-// a range scan leave; the vertices outside it stay, unused.
-Mesh jagged_band();
+// A band a triangle or two wide cut out of a wavy `columns` x 16 grid along its edges (the faces
+// whose centroid lies within 0.4 of a wavy centre line; 28 faces for 8 columns): a jagged sliver
+// with many ears, as the strips of a range scan leave; the vertices outside it stay, unused.
+Mesh jagged_band(int columns);
 // Removes face `face` from the mesh (makes a hole or opens a closed mesh).
 Mesh without_face(const Mesh& mesh, int face);
 
