@@ -17,6 +17,7 @@
 #include "disk_mesh.h"
 #include "half_edges.h"
 #include "mesh_components.h"
+#include "one_blas_thread.h"
 #include "rectangle_layout.h"
 #include "split_chart.h"
 #include "stretch.h"
@@ -767,6 +768,7 @@ ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi
                           needs_split(as_chart_pass(whole.passes.at(size_t(whole.chosen_pass))), options.max_stretch);
   if (!whole.error && !split_disk) return disk_result();
   if (!split_disk && (options.non_disk == NonDisk::Reject || !charts_can_fix(whole.error.code))) return failed(whole.error);
+  const OneBlasThread one_blas_thread;  // both cores go to the charts
   ChartsResult atlas = make_atlas(V, F, options);
   // A disk whose atlas uses the texture worse than its single map keeps the single map.
   if (split_disk && !atlas.error) {
