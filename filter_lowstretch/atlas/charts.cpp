@@ -10,6 +10,7 @@
 #include <thread>
 #include <utility>
 
+#include "boundary_crossing.h"
 #include "boundary_loops.h"
 #include "close_holes.h"
 #include "cut_graph.h"
@@ -413,15 +414,15 @@ Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
   return {};
 }
 
-// A chart kept above the bound on its rectangle (too small to cut, or its parts stretched more)
-// is mapped again with the natural boundary, and keeps that map if it uses its box better
-// (fill / L2^2): a strip one triangle wide or a coarse flat part has no good rectangle (a 37-face
-// strip of a scan: L2 46.7 on its rectangle, 1.0 free).
-// How much better the free map must use its box: the rectangle's further passes and the free
+// How much better a free map must use its box: the rectangle's further passes and the free
 // chart's cell, rarely of its shape, eat smaller gains (1: the camel 0.611 -> 0.575 in efficiency,
 // 2: 0.604, 4: 0.614).
 const double kFreeMustPay = 4;
 
+// A chart kept above the bound on its rectangle (too small to cut, or its parts stretched more)
+// is mapped again with the natural boundary, and keeps that map if it uses its box better
+// (fill / L2^2) and does not fold over itself: a jagged sliver has no good rectangle (a 37-face
+// strip of a scan: L2 46.7 on its rectangle, 1.0 free).
 void free_the_charts_that_stretch(std::vector<SolvedChart>& charts, const ChartOptions& options) {
   std::vector<int> above;
   // A free map covers at most its box at L2 at least 1: it can pay only above L2 sqrt(kFreeMustPay).
@@ -437,7 +438,9 @@ void free_the_charts_that_stretch(std::vector<SolvedChart>& charts, const ChartO
     solve_onto(free, for_jobs(options.disk, above.size()), 0, true);
     if (free.map.error || free.kept.flipped + free.kept.degenerate > 0) return;
     const double rectangle = chart.kept.flipped + chart.kept.degenerate > 0 ? 0 : 1 / (chart.kept.l2_stretch * chart.kept.l2_stretch);
-    if (free.fill() / (free.kept.l2_stretch * free.kept.l2_stretch) > kFreeMustPay * rectangle) chart = std::move(free);
+    if (!(free.fill() / (free.kept.l2_stretch * free.kept.l2_stretch) > kFreeMustPay * rectangle)) return;
+    if (uv_boundary_crosses_itself(free.mesh.F.topRows(Eigen::Index(free.faces.size())), free.map.uv)) return;
+    chart = std::move(free);
   });
 }
 
@@ -447,9 +450,6 @@ void free_the_charts_that_stretch(std::vector<SolvedChart>& charts, const ChartO
 Error lay_out(std::vector<SolvedChart>& charts, const ChartOptions& options, Eigen::Index face_count, ChartsResult& result) {
   // Half the gutter around every cell, in [0,1]^2 before store() moves it into [g, 1 - g]^2.
   const double g = options.gutter / options.texture_size, inset = 0.5 * g / (1 - 2 * g);
-  // Every cell at least a few texels wide inside its gutter, whatever its chart's area: tiny
-  // charts get a floor of area, raised until no cell is thinner than that (rows of many tiny
-  // charts can be thin).
   // A free chart's cell holds its box at the texel density of the others.
   std::vector<double> own_area;
   double total = 0;
@@ -461,6 +461,9 @@ Error lay_out(std::vector<SolvedChart>& charts, const ChartOptions& options, Eig
   // Cells no longer than four times their width, whatever the chart: a long thin cell has no
   // room for its gutter (the chart then fills part of it, kMostCellMismatch).
   for (const SolvedChart& c : charts) preferred.push_back(std::min(4.0, std::max(0.25, c.aspect())));
+  // Every cell at least a few texels wide inside its gutter, whatever its chart's area: tiny
+  // charts get a floor of area, raised until no cell is thinner than that (rows of many tiny
+  // charts can be thin).
   std::vector<Eigen::AlignedBox2d> cells;
   for (double texels = 2 * options.gutter + 4;; texels *= 1.5) {
     const double least = total * texels * texels / (double(options.texture_size) * options.texture_size);

@@ -1,0 +1,15 @@
+// Whether a chart's map overlaps itself although no triangle is flipped: a free (natural)
+// boundary can fold over itself (a spiral, a long curled flap). With every triangle positive, the
+// map can overlap only where its boundary crosses itself, so the boundary edges are tested pair by
+// pair.
+#pragma once
+#include <Eigen/Core>
+
+namespace lowstretch {
+
+// F: the chart's faces; uv: a row per vertex. True if two boundary edges that share no vertex
+// touch or cross in uv. Quadratic in the boundary edges: meant for the small charts a free
+// boundary is tried on (callers skip it above `most_edges`, returning true).
+bool uv_boundary_crosses_itself(const Eigen::MatrixXi& F, const Eigen::MatrixXd& uv, int most_edges = 4000);
+
+}  // namespace lowstretch
