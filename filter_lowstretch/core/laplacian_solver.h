@@ -8,7 +8,7 @@
 //   after the other with one hierarchy, SolverOptions::columns_on_two_threads). The matrix
 //   is an irreducibly diagonally dominant M-matrix for positive weights, the ideal case for AMG,
 //   and it needs no fill, so time and memory grow linearly with the mesh.
-// - Direct: UMFPACK's sparse LU (METIS ordering, symbolic analysis once).
+// - Direct: UMFPACK's sparse LU (METIS ordering, AMD for small systems; symbolic analysis once).
 // An AMG solve that does not converge, or whose true residual is too large, falls back to the
 // direct solve for that pass; the pass's SolveReport says so. Small systems are always solved
 // directly.
