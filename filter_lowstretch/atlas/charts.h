@@ -1,8 +1,8 @@
 // A low-stretch atlas of any manifold mesh: every connected component becomes a disk chart
 // (holes closed virtually, closed or higher-genus parts cut open along short seams), each chart
 // gets the paper's low-stretch map onto a rectangle, a chart that stretches more than a bound is
-// cut in two (split_chart.h) and mapped again, and the rectangles tile the unit square
-// (rectangle_layout.h).
+// cut in two (split_chart.h) and mapped again (a chart no rectangle fits keeps its own shape,
+// natural boundary), and the charts' rectangles tile the unit square (rectangle_layout.h).
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/Geometry>

@@ -66,7 +66,7 @@ Parameters make_parameters() {
                     "parts): reject it with the reason, or make charts: a low-stretch atlas. Every "
                     "part becomes a chart (holes closed virtually, closed parts cut along short "
                     "seams), a chart that stretches more than Max chart stretch is cut in two "
-                    "and mapped again, every chart fills a rectangle and the rectangles tile the "
+                    "and mapped again, every chart gets a rectangle and the rectangles tile the "
                     "texture a gutter apart. Make charts keeps a disk as one chart (the paper's "
                     "map); Atlas for any mesh cuts a disk too when that uses the texture better. "
                     "Non-manifold or inconsistently oriented meshes are rejected either way."},

@@ -30,7 +30,7 @@ const char* kUsage =
     "(default 1024), so that baking a texture of that size never addresses a texel outside it.\n"
     "--non-disk charts makes an atlas of a mesh that is not a disk (holes, closed, handles, several\n"
     "parts); reject (the default) refuses it. --atlas makes an atlas of any mesh: a chart whose L2\n"
-    "stretch is above S (default 1.2) is cut in two and mapped again; every chart fills a rectangle\n"
+    "stretch is above S (default 1.2) is cut in two and mapped again; every chart gets a rectangle\n"
     "and the rectangles tile the texture, G texels apart. A disk that meets S stays one chart.\n"
     "--all-passes runs max-passes passes even when the stretch stops falling (benchmarks).\n"
     "--refine then lowers the kept map's L2 stretch directly (at most 10 times the method's time).\n"
