@@ -203,8 +203,7 @@ struct SolvedChart {
   ChartPass kept;          // passes[map.chosen_pass]
   Eigen::AlignedBox2d box; // of the real faces' UV: the rectangle it is mapped onto
   const char* kept_whole = nullptr;  // why a chart above the bound was not cut
-  int passes_allowed = 0;  // the max_passes it was mapped with
-  double tolerance = 0;    // the multigrid's tolerance it was mapped with
+  bool deciding_map = false;  // made while deciding where to cut (fewer passes, looser solve)
   bool free_boundary = false;  // mapped with the natural boundary: its shape is kept in its cell
   double aspect() const { return box.sizes().y() > 0 ? box.sizes().x() / box.sizes().y() : 1; }  // width / height
   // The share of its box that its real faces cover (about 1 on a rectangle).
@@ -238,9 +237,8 @@ void solve_onto(SolvedChart& chart, Options options, double aspect, bool free_bo
   options.corners_at_turns = true;
   options.ear_bulge = kEarBulge;
   options.progress = nullptr;  // called from worker threads: the caller reports between rounds
-  chart.passes_allowed = options.max_passes;
-  chart.tolerance = options.solver.tolerance;
   chart.free_boundary = free_boundary;
+  chart.deciding_map = false;
   chart.passes.clear();
   options.pass_uv = [&chart](int, const Eigen::MatrixXd& uv) { chart.passes.push_back(measure_real_faces(chart.mesh, uv)); };
   chart.map = parameterize(chart.mesh.V, chart.mesh.F, options);
@@ -378,8 +376,10 @@ Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
   deciding.solver.residual_accepted = std::max(deciding.solver.residual_accepted, 100 * deciding.solver.tolerance);
   for (size_t first = 0, end = tree.nodes.size(); first < end; first = end, end = tree.nodes.size()) {
     const Options round = for_jobs(deciding, end - first);
-    for_each_index(int(end - first), [&](int i) { solve(tree.nodes[first + size_t(i)], round, 0); },
-                   largest_first(tree.nodes, first, end));
+    for_each_index(int(end - first), [&](int i) {
+      solve(tree.nodes[first + size_t(i)], round, 0);
+      tree.nodes[first + size_t(i)].deciding_map = true;
+    }, largest_first(tree.nodes, first, end));
     for (size_t i = first; i < end; ++i) {
       if (tree.nodes[i].map.error) return tree.nodes[i].map.error;
       if (!needs_split(tree.nodes[i].kept, options.max_stretch)) continue;
@@ -496,11 +496,8 @@ Error lay_out(std::vector<SolvedChart>& charts, const ChartOptions& options, Eig
     const double fits = turned[size_t(i)] ? 1 / cell : cell;
     const double wanted = std::min(c.aspect() * kMostCellMismatch, std::max(c.aspect() / kMostCellMismatch, fits));
     if (c.free_boundary) return;  // its shape is kept: it fills the part of its cell of that shape
-    // A map made while deciding where to cut had fewer passes than the method allows, and a
-    // looser solve.
-    const bool cut_short = c.passes_allowed < options.disk.max_passes && c.map.stop_reason == StopReason::MaxPasses;
-    const bool loose = c.tolerance > options.disk.solver.tolerance;
-    if (std::abs(std::log(wanted / c.aspect())) > 0.02 || cut_short || loose) solve(c, layout_options, wanted);
+    // A map made while deciding where to cut had fewer passes and a looser solve.
+    if (std::abs(std::log(wanted / c.aspect())) > 0.02 || c.deciding_map) solve(c, layout_options, wanted);
   }, largest_first(charts, 0, charts.size()));
   result.corner_uv.resize(face_count, 6);
   result.face_chart.assign(size_t(face_count), 0);
