@@ -71,13 +71,14 @@ Mesh octahedron() {
                     {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}});
 }
 
-Mesh two_grids(int n) {
-  const Mesh a = grid(n);
+Mesh two_grids(int n) { return joined(grid(n), grid(n), 1, Eigen::RowVector3d(2, 0, 0)); }
+
+Mesh joined(const Mesh& a, const Mesh& b, double scale, const Eigen::RowVector3d& offset) {
   Mesh m;
-  m.V.resize(2 * a.V.rows(), 3);
-  m.F.resize(2 * a.F.rows(), 3);
-  m.V << a.V, (a.V.rowwise() + Eigen::RowVector3d(2, 0, 0));
-  m.F << a.F, (a.F.array() + int(a.V.rows())).matrix();
+  m.V.resize(a.V.rows() + b.V.rows(), 3);
+  m.F.resize(a.F.rows() + b.F.rows(), 3);
+  m.V << a.V, ((b.V * scale).rowwise() + offset);
+  m.F << a.F, (b.F.array() + int(a.V.rows())).matrix();
   return m;
 }
 

@@ -35,6 +35,8 @@ Mesh double_torus();
 // whose centroid lies within 0.4 of a wavy centre line; 28 faces for 8 columns): a jagged sliver
 // with many ears, as the strips of a range scan leave; the vertices outside it stay, unused.
 Mesh jagged_band(int columns);
+// a's vertices and faces, then b's, b scaled by `scale` and moved by `offset`: one more component.
+Mesh joined(const Mesh& a, const Mesh& b, double scale, const Eigen::RowVector3d& offset);
 // Removes face `face` from the mesh (makes a hole or opens a closed mesh).
 Mesh without_face(const Mesh& mesh, int face);
 

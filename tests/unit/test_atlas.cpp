@@ -38,23 +38,7 @@ testmesh::Mesh sphere_with_bump() {
 testmesh::Mesh several_parts() {
   testmesh::Mesh m = sphere_with_bump();
   const testmesh::Mesh parts[] = {testmesh::torus(24, 12), testmesh::sphere(10, 16), testmesh::double_torus()};
-  for (int i = 0; i < 3; ++i) {
-    const Eigen::Index v0 = m.V.rows(), f0 = m.F.rows();
-    m.V.conservativeResize(v0 + parts[i].V.rows(), 3);
-    m.F.conservativeResize(f0 + parts[i].F.rows(), 3);
-    m.V.bottomRows(parts[i].V.rows()) = (parts[i].V * (0.5 + i)).rowwise() + Eigen::RowVector3d(10 * (i + 1), 0, 0);
-    m.F.bottomRows(parts[i].F.rows()) = (parts[i].F.array() + int(v0)).matrix();
-  }
-  return m;
-}
-
-// b's faces and vertices after a's, b moved by `offset`.
-testmesh::Mesh joined(const testmesh::Mesh& a, const testmesh::Mesh& b, const Eigen::RowVector3d& offset) {
-  testmesh::Mesh m = a;
-  m.V.conservativeResize(a.V.rows() + b.V.rows(), 3);
-  m.F.conservativeResize(a.F.rows() + b.F.rows(), 3);
-  m.V.bottomRows(b.V.rows()) = b.V.rowwise() + offset;
-  m.F.bottomRows(b.F.rows()) = (b.F.array() + int(a.V.rows())).matrix();
+  for (int i = 0; i < 3; ++i) m = testmesh::joined(m, parts[i], 0.5 + i, Eigen::RowVector3d(10 * (i + 1), 0, 0));
   return m;
 }
 
@@ -196,7 +180,7 @@ TEST(Atlas, DiskWhoseCutsDoNotPayStaysOneChart) {
 TEST(Atlas, SliverWithNoGoodRectangleKeepsItsOwnShape) {
   const testmesh::Mesh band = testmesh::jagged_band(8);
   ASSERT_LT(band.F.rows(), 2 * kSmallestChart);
-  const testmesh::Mesh m = joined(testmesh::sphere(10, 16), band, {40, 0, 0});
+  const testmesh::Mesh m = testmesh::joined(testmesh::sphere(10, 16), band, 1, Eigen::RowVector3d(40, 0, 0));
   const ChartsResult atlas = atlas_of(m);
   expect_valid_layout(m.F, atlas);
   for (size_t c = 0; c < atlas.charts.size(); ++c) EXPECT_LT(atlas.charts[c].l2_stretch, 1.5) << "chart " << c;

@@ -347,13 +347,7 @@ TEST(Charts, ManyComponents) {
   // Twenty small closed parts and a disk.
   testmesh::Mesh m = testmesh::grid(4);
   const testmesh::Mesh part = testmesh::octahedron();
-  for (int i = 0; i < 20; ++i) {
-    const Eigen::Index v0 = m.V.rows(), f0 = m.F.rows();
-    m.V.conservativeResize(v0 + part.V.rows(), 3);
-    m.F.conservativeResize(f0 + part.F.rows(), 3);
-    m.V.bottomRows(part.V.rows()) = (part.V * (0.1 + 0.02 * i)).rowwise() + Eigen::RowVector3d(3 * i, 0, 0);
-    m.F.bottomRows(part.F.rows()) = (part.F.array() + int(v0)).matrix();
-  }
+  for (int i = 0; i < 20; ++i) m = testmesh::joined(m, part, 0.1 + 0.02 * i, Eigen::RowVector3d(3 * i, 0, 0));
   const ChartsResult r = charts_of(m);
   expect_valid_layout(m.F, r);
   EXPECT_EQ(r.charts.size(), 21u);
