@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <numeric>
 #include <thread>
 #include <utility>
 
@@ -290,19 +291,21 @@ size_t faces_in(const std::vector<SolvedChart>& charts, size_t first, size_t end
   return faces;
 }
 
-// Runs job(i) for i < count on up to 8 threads, each taking the next index left, in `order`
-// (largest charts first, so that no thread is left with a big one at the end). A job's result
-// depends on its index alone, never on the thread or the timing, so the atlas is the same
-// every run.
-void for_each_index(int count, const std::function<void(int)>& job, const std::vector<int>& order = {}) {
-  const int threads = std::max(1, std::min<int>(int(std::thread::hardware_concurrency()), std::min(count, 8)));
+const int kMostThreads = 8;
+
+// Runs job(i, worker) for i < count on up to kMostThreads threads, each taking the next index
+// left, in `order` (largest charts first, so that no thread is left with a big one at the end);
+// worker (0 .. kMostThreads - 1) names the thread, for scratch space. A job's result depends on
+// its index alone, never on the thread or the timing, so the atlas is the same every run.
+void for_each_index(int count, const std::function<void(int, int)>& job, const std::vector<int>& order = {}) {
+  const int threads = std::max(1, std::min<int>(int(std::thread::hardware_concurrency()), std::min(count, kMostThreads)));
   std::atomic<int> next{0};
-  const auto work = [&] {
-    for (int k = next++; k < count; k = next++) job(order.empty() ? k : order[size_t(k)]);
+  const auto work = [&](int worker) {
+    for (int k = next++; k < count; k = next++) job(order.empty() ? k : order[size_t(k)], worker);
   };
   std::vector<std::thread> workers;
-  for (int t = 1; t < threads; ++t) workers.emplace_back(work);
-  work();
+  for (int t = 1; t < threads; ++t) workers.emplace_back(work, t);
+  work(0);
   for (std::thread& w : workers) w.join();
 }
 
@@ -375,11 +378,12 @@ Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
                           const ChartOptions& options, std::vector<SolvedChart>& leaves, std::vector<SolvedChart>& uncut,
                           std::vector<std::string>& notes) {
   const std::vector<int> twin = opposite_half_edges(F);
-  std::vector<int> local_of(static_cast<size_t>(unit_V.rows()), -1);
+  std::vector<std::vector<int>> local_of(kMostThreads);  // make_chart_mesh's scratch, per worker
+  local_of[0].assign(size_t(unit_V.rows()), -1);
   ChartTree tree;
   for (std::vector<int>& faces : components) {
     tree.nodes.emplace_back();
-    if (Error e = make_chart_mesh(unit_V, F, faces, local_of, tree.nodes.back().mesh)) return e;
+    if (Error e = make_chart_mesh(unit_V, F, faces, local_of[0], tree.nodes.back().mesh)) return e;
     tree.nodes.back().faces = std::move(faces);
   }
   tree.parts.resize(tree.nodes.size());
@@ -394,25 +398,39 @@ Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
   deciding.solver.residual_accepted = std::max(deciding.solver.residual_accepted, 100 * deciding.solver.tolerance);
   for (size_t first = 0, end = tree.nodes.size(); first < end; first = end, end = tree.nodes.size()) {
     const size_t round_faces = faces_in(tree.nodes, first, end);
-    for_each_index(int(end - first), [&](int i) {
+    for_each_index(int(end - first), [&](int i, int) {
       SolvedChart& chart = tree.nodes[first + size_t(i)];
       const bool may_cut = int(chart.faces.size()) >= 2 * kSmallestChart;
       solve(chart, for_share(deciding, chart.faces.size(), round_faces), 0, may_cut ? kSquareMayMeet * options.max_stretch : kInf);
       chart.deciding_map = true;
     }, largest_first(tree.nodes, first, end));
+    // The charts the bound cuts, cut on both cores (a chart's parts depend on it alone: on the
+    // 769k-face scan the cuts took 5.3 s on one); the chart limit is applied after, in order.
+    std::vector<int> to_cut;
     for (size_t i = first; i < end; ++i) {
       if (tree.nodes[i].map.error) return tree.nodes[i].map.error;
       if (!needs_split(tree.nodes[i].kept, options.max_stretch)) continue;
-      if (int(tree.nodes[i].faces.size()) < 2 * kSmallestChart) {
-        tree.nodes[i].kept_whole = "too few faces to cut";
-        continue;
-      }
+      if (int(tree.nodes[i].faces.size()) < 2 * kSmallestChart) tree.nodes[i].kept_whole = "too few faces to cut";
+      else to_cut.push_back(int(i));
+    }
+    std::vector<std::vector<SolvedChart>> parts_of(to_cut.size());
+    std::vector<int> order(to_cut.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+      return tree.nodes[size_t(to_cut[size_t(a)])].faces.size() > tree.nodes[size_t(to_cut[size_t(b)])].faces.size();
+    });
+    for_each_index(int(to_cut.size()), [&](int k, int worker) {
+      if (local_of[size_t(worker)].empty()) local_of[size_t(worker)].assign(size_t(unit_V.rows()), -1);
+      parts_of[size_t(k)] = cut_chart(unit_V, F, twin, tree.nodes[size_t(to_cut[size_t(k)])], local_of[size_t(worker)]);
+    }, order);
+    for (size_t k = 0; k < to_cut.size(); ++k) {
+      const size_t i = size_t(to_cut[k]);
       if (charts >= options.max_charts) {
         tree.nodes[i].kept_whole = "the chart limit is reached";
         limit_reached = true;
         continue;
       }
-      std::vector<SolvedChart> parts = cut_chart(unit_V, F, twin, tree.nodes[i], local_of);
+      std::vector<SolvedChart>& parts = parts_of[k];
       if (parts.empty()) tree.nodes[i].kept_whole = "no cut into disks was found";
       charts += std::max(0, int(parts.size()) - 1);
       for (SolvedChart& part : parts) {
@@ -461,7 +479,7 @@ void free_the_charts_that_stretch(std::vector<SolvedChart>& charts, const ChartO
       above.push_back(int(i));
   size_t above_faces = 0;
   for (const int i : above) above_faces += charts[size_t(i)].faces.size();
-  for_each_index(int(above.size()), [&](int k) {
+  for_each_index(int(above.size()), [&](int k, int) {
     SolvedChart& chart = charts[size_t(above[size_t(k)])];
     SolvedChart free;
     free.mesh = chart.mesh;
@@ -509,7 +527,7 @@ Error lay_out(std::vector<SolvedChart>& charts, const ChartOptions& options, Eig
   }
   std::vector<char> turned(charts.size(), 0);
   const size_t all_faces = faces_in(charts, 0, charts.size());
-  for_each_index(int(charts.size()), [&](int i) {
+  for_each_index(int(charts.size()), [&](int i, int) {
     SolvedChart& c = charts[size_t(i)];
     const double cell = cells[size_t(i)].sizes().x() / cells[size_t(i)].sizes().y();
     turned[size_t(i)] = std::abs(std::log(c.aspect() * cell)) < std::abs(std::log(c.aspect() / cell));
