@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <tuple>
 
 #include "boundary_loops.h"
 #include "half_edges.h"
@@ -90,14 +91,34 @@ Error pair_half_edges(const Eigen::MatrixXi& F, std::vector<int>& twin, DiskMesh
   return {};
 }
 
+// The vertices that sit exactly where another vertex sits.
+long long vertices_on_others(const Eigen::MatrixXd& V) {
+  std::vector<int> order(size_t(V.rows()));
+  std::iota(order.begin(), order.end(), 0);
+  const auto position = [&](int i) { return std::make_tuple(V(i, 0), V(i, 1), V(i, 2)); };
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return position(a) < position(b); });
+  long long on_others = 0;
+  for (size_t s = 0; s < order.size();) {
+    size_t e = s + 1;
+    while (e < order.size() && position(order[e]) == position(order[s])) ++e;
+    if (e - s > 1) on_others += (long long)(e - s);
+    s = e;
+  }
+  return on_others;
+}
+
+// Several components; a triangle soup (each face with vertices of its own, as STL stores them)
+// is named as such, since the way out is to weld it, not to keep one part or make charts.
 Error check_connected(const DiskMesh& disk) {
   const int n = int(disk.V.rows());
   UnionFind components(n);
   for (Eigen::Index e = 0; e < disk.edges.rows(); ++e) components.unite(disk.edges(e, 0), disk.edges(e, 1));
   long long count = 0;
   for (int i = 0; i < n; ++i) count += components.find(i) == i;
-  if (count > 1) return {ErrorCode::SeveralComponents, count, ""};
-  return {};
+  if (count <= 1) return {};
+  const long long on_others = vertices_on_others(disk.V);
+  if (2 * on_others >= n) return {ErrorCode::UnweldedVertices, on_others, ""};
+  return {ErrorCode::SeveralComponents, count, ""};
 }
 
 // On a manifold the corners around a vertex form one fan: join each corner to the corner across

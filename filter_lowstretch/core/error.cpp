@@ -38,6 +38,10 @@ std::string message(const Error& e) {
     case ErrorCode::SeveralComponents:
       return "the mesh has " + n(e.count) + " connected components; a disk has exactly 1: keep one component, or " +
              kChartsHint;
+    case ErrorCode::UnweldedVertices:
+      return plural(e.count, "vertex sits", "vertices sit") +
+             " exactly on another vertex, so the faces do not share them: the mesh is not welded (a triangle soup, as "
+             "STL files are); merge them first (MeshLab: Cleaning and Repairing > Remove Duplicate Vertices) and try again";
     case ErrorCode::Closed: return std::string("the mesh is closed (no boundary): cut it open into a disk, or ") + kChartsHint;
     case ErrorCode::SeveralBoundaryLoops:
       return "the mesh has " + n(e.count) + " boundary loops; a disk has exactly 1: close the holes or cut the mesh, or " +
@@ -86,6 +90,7 @@ const char* code_name(ErrorCode code) {
     case ErrorCode::InconsistentOrientation: return "inconsistent_orientation";
     case ErrorCode::NonManifoldVertices: return "non_manifold_vertices";
     case ErrorCode::SeveralComponents: return "several_components";
+    case ErrorCode::UnweldedVertices: return "unwelded_vertices";
     case ErrorCode::Closed: return "closed";
     case ErrorCode::SeveralBoundaryLoops: return "several_boundary_loops";
     case ErrorCode::NotGenusZero: return "not_genus_zero";

@@ -16,6 +16,7 @@ enum class ErrorCode {
   InconsistentOrientation,  // count: edges whose two faces disagree on orientation
   NonManifoldVertices,      // count: vertices whose faces form several fans
   SeveralComponents,        // count: connected components
+  UnweldedVertices,         // count: vertices at exactly the position of another (half or more of them)
   Closed,                   // count: unused
   SeveralBoundaryLoops,     // count: boundary loops
   NotGenusZero,             // count: genus

@@ -71,6 +71,7 @@ EXPECTED = {
     "octahedron": "closed",
     "three_holes": "3 boundary loops",
     "point_cloud": "no faces",
+    "unwelded": "not welded",
 }
 GUTTER = 2 / 1024  # the default gutter (texels) over the default texture size: where UV stays
 TOOL_WEIGHTS = "floater"  # the .mlx scripts use the default initial weights

@@ -71,6 +71,13 @@ def two_components():
     return v1 + v2, f1 + [tuple(i + len(v1) for i in f) for f in f2]
 
 
+def unwelded():
+    """Not welded: the wavy grid as a triangle soup, every face with vertices of its own (as STL
+    stores a mesh)."""
+    vertices, faces = wavy_grid(8)
+    return [vertices[i] for f in faces for i in f], [(3 * k, 3 * k + 1, 3 * k + 2) for k in range(len(faces))]
+
+
 def tetrahedron():
     """Not a disk: closed."""
     vertices = [(1, 1, 1), (1, -1, -1), (-1, 1, -1), (-1, -1, 1)]
@@ -168,7 +175,7 @@ def sphere(rings=12, sectors=16):
 
 DISKS = {"wavy_grid": wavy_grid, "hemisphere": hemisphere, "grid_with_unused_vertices": grid_with_unused_vertices}
 BAD = {"two_components": two_components, "tetrahedron": tetrahedron, "octahedron": octahedron,
-       "three_holes": three_holes, "point_cloud": point_cloud}
+       "three_holes": three_holes, "point_cloud": point_cloud, "unwelded": unwelded}
 # Not disks, but manifold and oriented: "Make charts" parameterizes them.
 NON_DISKS = {"two_components": two_components, "three_holes": three_holes, "octahedron": octahedron,
              "torus": torus, "sphere": sphere}

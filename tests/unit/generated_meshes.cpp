@@ -82,6 +82,18 @@ Mesh joined(const Mesh& a, const Mesh& b, double scale, const Eigen::RowVector3d
   return m;
 }
 
+Mesh soup(const Mesh& mesh) {
+  Mesh m;
+  m.V.resize(3 * mesh.F.rows(), 3);
+  m.F.resize(mesh.F.rows(), 3);
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      m.V.row(3 * f + k) = mesh.V.row(mesh.F(f, k));
+      m.F(f, k) = int(3 * f + k);
+    }
+  return m;
+}
+
 Mesh torus(int rings, int sectors) {
   std::vector<Eigen::RowVector3d> v;
   std::vector<Eigen::RowVector3i> f;

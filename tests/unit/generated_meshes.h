@@ -37,6 +37,9 @@ Mesh double_torus();
 Mesh jagged_band(int columns);
 // a's vertices and faces, then b's, b scaled by `scale` and moved by `offset`: one more component.
 Mesh joined(const Mesh& a, const Mesh& b, double scale, const Eigen::RowVector3d& offset);
+// The same faces, each with three vertices of its own at its corners' positions: a triangle
+// soup, as STL files store a mesh.
+Mesh soup(const Mesh& mesh);
 // Removes face `face` from the mesh (makes a hole or opens a closed mesh).
 Mesh without_face(const Mesh& mesh, int face);
 

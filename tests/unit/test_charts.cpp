@@ -211,6 +211,15 @@ TEST(Charts, RejectIsTheDefaultAndItsMessageNamesTheOption) {
   }
 }
 
+TEST(Charts, TriangleSoupIsRefusedNotCutIntoAChartPerFace) {
+  const testmesh::Mesh m = testmesh::soup(testmesh::sphere(6, 8));
+  for (const NonDisk mode : {NonDisk::Charts, NonDisk::Atlas}) {
+    const ChartsResult r = charts_of(m, mode);
+    EXPECT_EQ(r.error.code, ErrorCode::UnweldedVertices) << message(r.error);
+    EXPECT_EQ(r.corner_uv.size(), 0);
+  }
+}
+
 TEST(Charts, PunchedDiskIsOneChartWithItsHolesOpen) {
   const testmesh::Mesh m = disk_with_two_holes();
   const ChartsResult r = charts_of(m);

@@ -106,6 +106,24 @@ TEST(DiskMesh, TwoComponents) {
   EXPECT_NE(message(e).find("2 connected components"), std::string::npos);
 }
 
+TEST(DiskMesh, TriangleSoupIsNamedUnwelded) {
+  const testmesh::Mesh m = testmesh::soup(testmesh::grid(3));  // 18 faces, 54 vertices
+  const Error e = check(m);
+  EXPECT_EQ(e.code, ErrorCode::UnweldedVertices);
+  // Every vertex but the grid's two corners with a single face sits on another.
+  EXPECT_EQ(e.count, 52);
+  EXPECT_NE(message(e).find("not welded"), std::string::npos) << message(e);
+  EXPECT_NE(message(e).find("Remove Duplicate Vertices"), std::string::npos) << message(e);
+  EXPECT_FALSE(charts_would_help(e.code));
+}
+
+TEST(DiskMesh, PartsMeetingAlongASideStaySeveralComponents) {
+  // The second grid's left column sits on the first's right one: 6 of 18 vertices, not a soup.
+  const Error e = check(testmesh::joined(testmesh::grid(2), testmesh::grid(2), 1, Eigen::RowVector3d(1, 0, 0)));
+  EXPECT_EQ(e.code, ErrorCode::SeveralComponents);
+  EXPECT_EQ(e.count, 2);
+}
+
 TEST(DiskMesh, NonManifoldVertexOfTwoFansSharingAVertex) {
   testmesh::Mesh m;
   m.V.resize(5, 3);
