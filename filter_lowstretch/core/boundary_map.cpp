@@ -13,7 +13,10 @@ std::vector<double> boundary_arc_lengths(const DiskMesh& disk) {
     length[i] = (disk.V.row(disk.boundary[(i + 1) % n]) - disk.V.row(disk.boundary[i])).norm();
     total += length[i];
   }
-  const double floor = total > 0 ? 1e-6 * total / double(n) : 1.0;
+  // A zero-length edge (scans have them) still moves on by a thousandth of a mean edge, so that
+  // its two ends stay apart when the texture is stored as float (at a millionth they were 1e-8
+  // apart on a 400-edge boundary: its triangle collapsed).
+  const double floor = total > 0 ? 1e-3 * total / double(n) : 1.0;
   for (size_t i = 0; i < n; ++i) arc[i + 1] = arc[i] + std::max(length[i], floor);
   return arc;
 }
