@@ -22,6 +22,7 @@
 #include "one_blas_thread.h"
 #include "rectangle_layout.h"
 #include "split_chart.h"
+#include "split_vertex_fans.h"
 #include "stretch.h"
 
 namespace lowstretch {
@@ -31,7 +32,8 @@ namespace {
 using Clock = std::chrono::steady_clock;
 const double kInf = std::numeric_limits<double>::infinity();
 
-// The problems that charts solve; anything else (non-manifold, non-orientable, bad indices or
+// The problems that charts solve (besides non-manifold vertices, split per fan before: see
+// parameterize_charts); anything else (non-manifold edges, non-orientable, bad indices or
 // coordinates) stays an error.
 bool charts_can_fix(ErrorCode code) {
   return code == ErrorCode::SeveralComponents || code == ErrorCode::Closed || code == ErrorCode::SeveralBoundaryLoops ||
@@ -90,7 +92,17 @@ Error make_chart_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
   }
 
   DiskMesh check;
-  const Error e = make_disk_mesh(local_V, local_F, check);
+  Error e = make_disk_mesh(local_V, local_F, check);
+  if (e.code == ErrorCode::NonManifoldVertices) {
+    // A cut that passes a hole can leave faces that meet at one vertex only: each fan gets its
+    // own copy of it (an armadillo with 200 one-face holes: a 42690-face chart at L2 1201 found
+    // no cut into disks without this). Parts held together by that vertex alone stay refused.
+    SplitFans split = split_vertex_fans(local_V, local_F);
+    local_V = std::move(split.V);
+    local_F = std::move(split.F);
+    e = make_disk_mesh(local_V, local_F, check);
+    if (e.code == ErrorCode::SeveralComponents) return e;
+  }
   if (e && !charts_can_fix(e.code)) return e;
 
   const int real_vertices = int(local_V.rows());
@@ -816,6 +828,22 @@ ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi
     result.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
     return result;
   };
+  // Parts or holes that touch at a vertex: the charts are made on the mesh with that vertex split
+  // into one per fan of faces. (Such a vertex is found after several components, so both codes.)
+  const ErrorCode found = whole.error.code;
+  if (options.non_disk != NonDisk::Reject && (found == ErrorCode::NonManifoldVertices || found == ErrorCode::SeveralComponents)) {
+    const SplitFans split = split_vertex_fans(V, F);
+    if (split.split_vertices > 0) {
+      ChartsResult result = parameterize_charts(split.V, split.F, options);
+      if (result.error) return result;
+      result.vertex_stretch = join_vertex_values(split, result.vertex_stretch, int(V.rows()));
+      result.notes.insert(result.notes.begin(), std::to_string(split.split_vertices) +
+                                                    " non-manifold vertices (where parts or holes touch): each fan of faces "
+                                                    "around them is mapped on its own; the mesh is unchanged");
+      result.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
+      return result;
+    }
+  }
   const bool split_disk = !whole.error && options.non_disk == NonDisk::Atlas &&
                           needs_split(as_chart_pass(whole.passes.at(size_t(whole.chosen_pass))), options.max_stretch);
   if (!whole.error && !split_disk) return disk_result();

@@ -121,21 +121,16 @@ Error check_connected(const DiskMesh& disk) {
   return {ErrorCode::SeveralComponents, count, ""};
 }
 
-// On a manifold the corners around a vertex form one fan: join each corner to the corner across
-// its incoming edge, then count the vertices where more than one fan remains.
+// On a manifold the corners around a vertex form one fan: count the vertices with several.
 Error check_vertex_fans(const Eigen::MatrixXi& F, const std::vector<int>& twin, int n) {
-  const int nh = int(twin.size());
-  UnionFind fans(nh);
-  for (int h = 0; h < nh; ++h)
-    if (twin[size_t(previous_half_edge(h))] >= 0) fans.unite(h, twin[size_t(previous_half_edge(h))]);
+  const std::vector<int> fan = corner_fans(twin);
   std::vector<int> fan_of_vertex(size_t(n), -1);
   long long non_manifold = 0;
-  for (int h = 0; h < nh; ++h) {
-    int& fan = fan_of_vertex[size_t(half_edge_tail(F, h))];
-    const int root = fans.find(h);
-    if (fan == -1) fan = root;
-    else if (fan != root && fan != -2) {
-      fan = -2;  // counted once
+  for (int h = 0; h < int(twin.size()); ++h) {
+    int& seen = fan_of_vertex[size_t(half_edge_tail(F, h))];
+    if (seen == -1) seen = fan[size_t(h)];
+    else if (seen != fan[size_t(h)] && seen != -2) {
+      seen = -2;  // counted once
       ++non_manifold;
     }
   }

@@ -7,7 +7,7 @@ namespace lowstretch {
 namespace {
 std::string n(long long v) { return std::to_string(v); }
 std::string plural(long long v, const char* one, const char* many) { return n(v) + " " + (v == 1 ? one : many); }
-// The way out for the four topology problems that charts solve (charts.h); the caller names the
+// The way out for the topology problems that charts solve (charts.h); the caller names the
 // option its user knows (charts_would_help).
 const char* const kChartsHint = "parameterize it as charts";
 }  // namespace
@@ -34,7 +34,7 @@ std::string message(const Error& e) {
              " of opposite orientation: the mesh is not consistently oriented (or not orientable); re-orient the faces coherently first";
     case ErrorCode::NonManifoldVertices:
       return plural(e.count, "non-manifold vertex", "non-manifold vertices") +
-             " (several fans of faces meet there): split non-manifold vertices first";
+             " (several fans of faces meet there): split non-manifold vertices first, or " + kChartsHint;
     case ErrorCode::SeveralComponents:
       return "the mesh has " + n(e.count) + " connected components; a disk has exactly 1: keep one component, or " +
              kChartsHint;
@@ -76,7 +76,7 @@ std::string number_text(double value) {
 
 bool charts_would_help(ErrorCode code) {
   return code == ErrorCode::SeveralComponents || code == ErrorCode::Closed || code == ErrorCode::SeveralBoundaryLoops ||
-         code == ErrorCode::NotGenusZero;
+         code == ErrorCode::NotGenusZero || code == ErrorCode::NonManifoldVertices;
 }
 
 const char* code_name(ErrorCode code) {

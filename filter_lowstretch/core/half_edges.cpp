@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <utility>
 
+#include "union_find.h"
+
 namespace lowstretch {
 
 std::vector<std::pair<uint64_t, int>> half_edges_by_edge(const Eigen::MatrixXi& F) {
@@ -41,6 +43,20 @@ std::vector<int> opposite_half_edges(const Eigen::MatrixXi& F) {
       ++s;
     }
   return twin;
+}
+
+std::vector<int> corner_fans(const std::vector<int>& twin) {
+  const int nh = int(twin.size());
+  UnionFind fans(nh);
+  for (int h = 0; h < nh; ++h)  // corner h and the corner across the edge that ends at it
+    if (twin[size_t(previous_half_edge(h))] >= 0) fans.unite(h, twin[size_t(previous_half_edge(h))]);
+  std::vector<int> fan(static_cast<size_t>(nh)), smallest(static_cast<size_t>(nh), -1);
+  for (int h = 0; h < nh; ++h) {
+    int& s = smallest[size_t(fans.find(h))];
+    if (s < 0) s = h;
+    fan[size_t(h)] = s;
+  }
+  return fan;
 }
 
 }  // namespace lowstretch

@@ -22,4 +22,9 @@ std::vector<std::pair<uint64_t, int>> half_edges_by_edge(const Eigen::MatrixXi& 
 // an edge shared by more than two faces is arbitrary.
 std::vector<int> opposite_half_edges(const Eigen::MatrixXi& F);
 
+// The fan of each corner (half-edge h's tail): corners around one vertex joined across the
+// edges their faces share, one number per fan (the smallest corner in it). On a manifold every
+// vertex has one fan; where parts or holes touch at a vertex only, it has several.
+std::vector<int> corner_fans(const std::vector<int>& twin);
+
 }  // namespace lowstretch

@@ -30,6 +30,10 @@ ChartsResult charts_of(const testmesh::Mesh& m, NonDisk non_disk = NonDisk::Char
   return parameterize_charts(m.V, m.F, options);
 }
 
+bool has_note(const ChartsResult& r, const std::string& text) {
+  return std::any_of(r.notes.begin(), r.notes.end(), [&](const std::string& n) { return n.find(text) != std::string::npos; });
+}
+
 // A bound no chart exceeds: one chart per component, cut and holed as need be.
 const double kNoSplit = 1e5;
 
@@ -362,14 +366,54 @@ TEST(Charts, ManyComponents) {
   EXPECT_EQ(r.charts.size(), 21u);
 }
 
-TEST(Charts, NonManifoldAndMisorientedStayRejected) {
-  // Two triangles that share only a vertex.
-  testmesh::Mesh bowtie;
-  bowtie.V.resize(5, 3);
-  bowtie.V << 0, 0, 0, 1, 0, 0, 0, 1, 0, -1, 0, 0, 0, -1, 0;
-  bowtie.F.resize(2, 3);
-  bowtie.F << 0, 1, 2, 0, 3, 4;
-  EXPECT_EQ(charts_of(bowtie).error.code, ErrorCode::NonManifoldVertices);
+// Two triangles that share only a vertex.
+testmesh::Mesh bowtie() {
+  testmesh::Mesh m;
+  m.V.resize(5, 3);
+  m.V << 0, 0, 0, 1, 0, 0, 0, 1, 0, -1, 0, 0, 0, -1, 0;
+  m.F.resize(2, 3);
+  m.F << 0, 1, 2, 0, 3, 4;
+  return m;
+}
+
+TEST(Charts, NonManifoldVerticesAreMappedPerFan) {
+  const testmesh::Mesh m = bowtie();
+  EXPECT_EQ(charts_of(m, NonDisk::Reject).error.code, ErrorCode::NonManifoldVertices);
+  const ChartsResult r = charts_of(m);
+  ASSERT_FALSE(r.error) << message(r.error);
+  expect_valid_layout(m.F, r);
+  EXPECT_EQ(r.charts.size(), 2u);
+  EXPECT_TRUE(has_note(r, "1 non-manifold vertices"));
+  // The shared vertex's stretch, over both faces, from the faces' own (area-weighted RMS).
+  ASSERT_EQ(r.vertex_stretch.size(), 5);
+  const double shared = std::sqrt(0.5 * (r.face_stretch(0) * r.face_stretch(0) + r.face_stretch(1) * r.face_stretch(1)));
+  EXPECT_NEAR(r.vertex_stretch(0), shared, 1e-12);
+  EXPECT_NEAR(r.vertex_stretch(1), r.face_stretch(0), 1e-12);
+}
+
+// Holes that touch at a vertex, as a scan's dropouts do: one vertex of the grid is a corner of
+// two removed squares (diagonally), so its faces form two fans.
+TEST(Charts, HolesTouchingAtAVertexAreOneAtlas) {
+  testmesh::Mesh m = testmesh::grid(8);
+  std::vector<Eigen::RowVector3i> kept;
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f) {
+    const Eigen::RowVector3d c = (m.V.row(m.F(f, 0)) + m.V.row(m.F(f, 1)) + m.V.row(m.F(f, 2))) / 3;
+    const bool square_a = c.x() > 0.25 && c.x() < 0.375 && c.y() > 0.25 && c.y() < 0.375;
+    const bool square_b = c.x() > 0.375 && c.x() < 0.5 && c.y() > 0.375 && c.y() < 0.5;
+    if (!square_a && !square_b) kept.push_back(m.F.row(f));
+  }
+  m.F.resize(Eigen::Index(kept.size()), 3);
+  for (size_t f = 0; f < kept.size(); ++f) m.F.row(Eigen::Index(f)) = kept[f];
+  EXPECT_EQ(charts_of(m, NonDisk::Reject).error.code, ErrorCode::NonManifoldVertices);
+  for (const NonDisk mode : {NonDisk::Charts, NonDisk::Atlas}) {
+    const ChartsResult r = charts_of(m, mode);
+    ASSERT_FALSE(r.error) << message(r.error);
+    expect_valid_layout(m.F, r);
+    EXPECT_TRUE(has_note(r, "1 non-manifold vertices"));
+  }
+}
+
+TEST(Charts, MisorientedAndNonManifoldEdgesStayRejected) {
   // A closed mesh with one face turned over.
   testmesh::Mesh turned = testmesh::octahedron();
   std::swap(turned.F(0, 1), turned.F(0, 2));
@@ -388,7 +432,7 @@ TEST(Charts, SharedNonDiskMeshes) {
     if (DIR* dir = opendir((folder + sub).c_str())) {
       while (dirent* entry = readdir(dir)) {
         const std::string name = entry->d_name;
-        for (const char* prefix : {"holes", "bad_closed_", "bad_components", "bad_genus1_", "bad_holes", "bad_quads"})
+        for (const char* prefix : {"holes", "bad_closed_", "bad_components", "bad_genus1_", "bad_holes", "bad_quads", "bad_nonmanifold"})
           if (name.rfind(prefix, 0) == 0) paths.push_back(folder + sub + "/" + name);
       }
       closedir(dir);
