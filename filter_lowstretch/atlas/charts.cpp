@@ -235,8 +235,6 @@ struct SolvedChart {
 // scan: L2 2.69 without, 1.46 with).
 const double kEarBulge = 0.25;
 
-// How far from its own shape a chart may be stretched to fill its cell (width / height ratio).
-const double kMostCellMismatch = 2;
 
 bool needs_split(const ChartPass& p, double max_stretch) {
   return p.flipped + p.degenerate > 0 || !(p.l2_stretch <= max_stretch);
