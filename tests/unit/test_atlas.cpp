@@ -222,3 +222,21 @@ TEST(Atlas, ChartsWithManySmallHolesAreStillCut) {
   EXPECT_LT(r.layout.l2_stretch, 1.6);
   EXPECT_FALSE(has_note_containing(r, "no cut into disks was found"));
 }
+
+// Scan debris: thousands of loose triangles beside the part that matters. Each gets a cell of
+// the smallest size a gutter allows, which takes texture from the rest; a note says so and what
+// to do.
+TEST(Atlas, TinyPartsThatTakeMuchOfTheTextureAreNoted) {
+  testmesh::Mesh m = testmesh::sphere(16, 24);
+  EXPECT_FALSE(has_note_containing(atlas_of(m), "too small"));
+  testmesh::Mesh speck;
+  speck.V.resize(3, 3);
+  speck.V << 0, 0, 0, 0.01, 0, 0, 0, 0.01, 0;
+  speck.F.resize(1, 3);
+  speck.F << 0, 1, 2;
+  for (int i = 0; i < 4000; ++i) m = testmesh::joined(m, speck, 1, Eigen::RowVector3d(2 + i % 64, i / 64, 0));
+  const ChartsResult r = atlas_of(m);
+  ASSERT_FALSE(r.error) << message(r.error);
+  EXPECT_TRUE(has_note_containing(r, "4000 charts too small for the 1024-texel texture"));
+  EXPECT_TRUE(has_note_containing(r, "Remove Isolated pieces"));
+}
