@@ -235,7 +235,6 @@ struct SolvedChart {
 // scan: L2 2.69 without, 1.46 with).
 const double kEarBulge = 0.25;
 
-
 bool needs_split(const ChartPass& p, double max_stretch) {
   return p.flipped + p.degenerate > 0 || !(p.l2_stretch <= max_stretch);
 }
@@ -285,10 +284,10 @@ void solve(SolvedChart& chart, const Options& options, double aspect, double squ
   if (!square.map.error && better(square.kept, chart.kept)) chart = std::move(square);
 }
 
-// The method's options for a chart of `faces` among `all_faces` solved at once: a chart with
-// most of the faces solves u and v on two threads, the others sharing the second core (the
-// armadillo is cut into parts of 4422 and 47578 faces first: 3.4 -> 3.0 s, the same atlas); the
-// others build one multigrid hierarchy for u and v instead of two, the threads keeping the cores busy.
+// The method's options for a chart of `faces` among `all_faces` solved at once. A chart with
+// most of the faces solves u and v on two threads while the rest share the second core (the
+// armadillo is cut into parts of 4422 and 47578 faces first: 3.4 -> 3.0 s, the same atlas); any
+// other builds one multigrid hierarchy for u and v instead of two, the threads keeping the cores busy.
 Options for_share(Options options, size_t faces, size_t all_faces) {
   options.solver.columns_on_two_threads = 2 * faces > all_faces;
   return options;
@@ -543,7 +542,7 @@ Error lay_out(std::vector<SolvedChart>& charts, const ChartOptions& options, Eig
     if (least * double(charts.size()) > total) return {ErrorCode::ChartsNotPacked, static_cast<long long>(charts.size()), ""};
   }
   // Scan debris: tiny parts, each given a cell it cannot fill, leave the rest of the mesh little
-  // texture (the armadillo beside 30000 loose triangles: efficiency 0.001).
+  // texture (tests/bench/make_defects.py's debris30000: 66% of it, efficiency 0.25).
   if (floored_share > kMostFlooredShare)
     result.notes.push_back(std::to_string(floored) + " charts too small for the " + std::to_string(options.texture_size) +
                            "-texel texture take " + std::to_string(int(std::lround(100 * floored_share))) +
@@ -849,9 +848,11 @@ ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi
       ChartsResult result = parameterize_charts(split.V, split.F, options);
       if (result.error) return result;
       result.vertex_stretch = join_vertex_values(split, result.vertex_stretch, int(V.rows()));
+      const bool one = split.split_vertices == 1;
       result.notes.insert(result.notes.begin(), std::to_string(split.split_vertices) +
-                                                    " non-manifold vertices (where parts or holes touch): each fan of faces "
-                                                    "around them is mapped on its own; the mesh is unchanged");
+                                                    (one ? " non-manifold vertex" : " non-manifold vertices") +
+                                                    " (where parts or holes touch) split per fan of faces for the "
+                                                    "charts; the mesh is unchanged");
       result.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
       return result;
     }
