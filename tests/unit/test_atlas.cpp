@@ -34,6 +34,19 @@ testmesh::Mesh sphere_with_bump() {
   return m;
 }
 
+// A closed ball of 12,000 faces with six arms: far above the bound, so that its largest parts are
+// cut before they are mapped (ChartOptions::most_cuts_ahead).
+testmesh::Mesh ball_with_arms() {
+  testmesh::Mesh m = testmesh::sphere(64, 96);
+  for (Eigen::Index v = 0; v < m.V.rows(); ++v)
+    for (int axis : {0, 1, 2}) {
+      const double x = m.V(v, axis);
+      if (x > 0.7) m.V(v, axis) += 30 * (x - 0.7);
+      if (x < -0.7) m.V(v, axis) += 20 * (x + 0.7);
+    }
+  return m;
+}
+
 // Closed parts of several shapes and sizes: charts solved on both cores at once.
 testmesh::Mesh several_parts() {
   testmesh::Mesh m = sphere_with_bump();
@@ -159,6 +172,34 @@ TEST(Atlas, BoundAndChartLimitOutOfRangeAreRefusedByName) {
   const ChartsResult none = atlas_of(m, 1.2, 0);
   EXPECT_EQ(none.error.code, ErrorCode::InvalidOption);
   EXPECT_NE(message(none.error).find("max_charts"), std::string::npos) << message(none.error);
+}
+
+// Cutting the largest part of a chart far above the bound before mapping it saves the maps of a
+// body that is cut again anyway: the same atlas as mapping every part.
+TEST(Atlas, CutsAheadGiveTheSameAtlasAsMappingEveryPart) {
+  const testmesh::Mesh m = ball_with_arms();
+  ChartOptions options;
+  options.non_disk = NonDisk::Atlas;
+  const ChartsResult ahead = parameterize_charts(m.V, m.F, options);
+  options.most_cuts_ahead = 0;
+  const ChartsResult every = parameterize_charts(m.V, m.F, options);
+  ASSERT_FALSE(ahead.error) << message(ahead.error);
+  ASSERT_FALSE(every.error) << message(every.error);
+  EXPECT_GT(ahead.charts.size(), 5u);
+  EXPECT_EQ(ahead.face_chart, every.face_chart);
+  ASSERT_EQ(ahead.corner_uv.size(), every.corner_uv.size());
+  EXPECT_EQ(std::memcmp(ahead.corner_uv.data(), every.corner_uv.data(), sizeof(double) * size_t(ahead.corner_uv.size())), 0);
+  for (const Chart& c : ahead.charts) EXPECT_TRUE(c.l2_stretch <= options.max_stretch || !c.kept_whole.empty());
+}
+
+TEST(Atlas, CutsAheadOutOfRangeAreRefusedByName) {
+  ChartOptions options;
+  options.non_disk = NonDisk::Atlas;
+  options.most_cuts_ahead = -1;
+  const testmesh::Mesh m = testmesh::grid(4);
+  const ChartsResult r = parameterize_charts(m.V, m.F, options);
+  EXPECT_EQ(r.error.code, ErrorCode::InvalidOption);
+  EXPECT_NE(message(r.error).find("most_cuts_ahead"), std::string::npos) << message(r.error);
 }
 
 // A tall cap cut in parts stretches more than as one square chart: it stays the disk's map.
