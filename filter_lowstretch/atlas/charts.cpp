@@ -424,21 +424,30 @@ struct ChartTree {
 
 // Undoes the cuts that did not pay: bottom up, a chart whose parts (all its leaves) together
 // stretch at least as much as it does alone becomes a leaf again, so that its seams go. A cut
-// that pays only after further cuts is kept: the leaves are compared, not the first parts.
-void undo_cuts_that_did_not_pay(ChartTree& tree) {
+// that pays only after further cuts is kept: the leaves are compared, not the first parts. A
+// chart cut ahead has no map: `map_cut_ahead` maps it when its leaves stretch more than the bound
+// on average (its cut may not have paid); otherwise, or if it cannot be mapped, it stays cut.
+void undo_cuts_that_did_not_pay(ChartTree& tree, double max_stretch, const std::function<bool(SolvedChart&)>& map_cut_ahead) {
   const size_t n = tree.nodes.size();
   std::vector<double> weighted(n, 0.0);  // over each node's leaves: sum A L2^2 (the leaves cover its area)
+  std::vector<double> area(n, 0.0);      // and sum A
   for (size_t i = n; i-- > 0;) {
-    const ChartPass& alone = tree.nodes[i].kept;
-    const bool valid = alone.flipped + alone.degenerate == 0 && !tree.nodes[i].cut_ahead;  // no map: stays cut
+    SolvedChart& node = tree.nodes[i];
+    for (int p : tree.parts[i]) {
+      weighted[i] += weighted[size_t(p)];
+      area[i] += area[size_t(p)];
+    }
+    if (node.cut_ahead && weighted[i] > max_stretch * max_stretch * area[i] && map_cut_ahead(node)) node.cut_ahead = false;
+    const ChartPass& alone = node.kept;
+    const bool valid = alone.flipped + alone.degenerate == 0 && !node.cut_ahead;  // no map: stays cut
     const double own = valid ? alone.area_3d * alone.l2_stretch * alone.l2_stretch : kInf;
     if (!tree.parts[i].empty()) {
-      for (int p : tree.parts[i]) weighted[i] += weighted[size_t(p)];
       if (!(own <= weighted[i]) || !valid) continue;  // an invalid chart stays cut
       tree.parts[i].clear();
-      tree.nodes[i].kept_whole = "its parts stretched more";
+      node.kept_whole = "its parts stretched more";
     }
     weighted[i] = own;
+    area[i] = alone.area_3d;
   }
 }
 
@@ -538,7 +547,12 @@ Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
     if (options.disk.progress && !options.disk.progress(0.9 * (1 - std::pow(0.5, double(end))), "charts"))
       return {ErrorCode::Cancelled, 0, ""};
   }
-  undo_cuts_that_did_not_pay(tree);
+  undo_cuts_that_did_not_pay(tree, options.max_stretch, [&](SolvedChart& chart) {
+    if (make_chart_mesh(unit_V, F, chart.faces, local_of[0], chart.mesh)) return false;
+    solve(chart, deciding, 0, kSquareMayMeet * options.max_stretch);
+    chart.deciding_map = true;
+    return !chart.map.error;
+  });
   bool cut = false;
   for (size_t root = 0; root < components.size(); ++root) cut = cut || !tree.parts[root].empty();
   for (size_t root = 0; root < components.size() && cut; ++root) {
