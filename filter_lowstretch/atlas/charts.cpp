@@ -416,6 +416,23 @@ Cut cut_with_cuts_ahead(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F,
   return cut;
 }
 
+// The chart's own parts only, without the cuts ahead (which would pass the chart limit): the part
+// that was cut ahead gets its mesh; if it is no disk with holes, the chart is not cut at all.
+void keep_only_the_first_cut(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, Cut& cut, std::vector<int>& local_of) {
+  while (!cut.parent.empty() && cut.parent.back() >= 0) {
+    cut.pieces.pop_back();
+    cut.parent.pop_back();
+  }
+  cut.ahead = 0;
+  bool built = true;
+  for (SolvedChart& piece : cut.pieces)
+    if (piece.cut_ahead) {
+      piece.cut_ahead = false;
+      built = built && !make_chart_mesh(unit_V, F, piece.faces, local_of, piece.mesh);
+    }
+  if (!built) cut = Cut();
+}
+
 // The charts cut from one another: node 0.. are the components, a node's parts come after it.
 struct ChartTree {
   std::vector<SolvedChart> nodes;
@@ -527,15 +544,9 @@ Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
         continue;
       }
       Cut& cut = cuts[k];
+      if (charts + int(cut.pieces.size()) - cut.ahead - 1 > options.max_charts)
+        keep_only_the_first_cut(unit_V, F, cut, local_of[0]);
       if (cut.pieces.empty()) tree.nodes[i].kept_whole = "no cut into disks was found";
-      if (charts + int(cut.pieces.size()) - cut.ahead - 1 > options.max_charts) {  // only the chart's own cut
-        while (!cut.parent.empty() && cut.parent.back() >= 0) {
-          cut.pieces.pop_back();
-          cut.parent.pop_back();
-        }
-        for (SolvedChart& piece : cut.pieces) piece.cut_ahead = false;
-        cut.ahead = 0;
-      }
       charts += std::max(0, int(cut.pieces.size()) - cut.ahead - 1);
       const size_t base = tree.nodes.size();
       for (size_t j = 0; j < cut.pieces.size(); ++j) {

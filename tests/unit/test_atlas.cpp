@@ -220,6 +220,20 @@ TEST(Atlas, CutsAheadThatDoNotPayAreUndone) {
   expect_valid_layout(m.F, ahead);
 }
 
+// A chart limit that the cuts ahead would pass: the chart's own cut is made, and its part that was
+// cut ahead is mapped as a chart (it had no mesh of its own: the atlas failed).
+TEST(Atlas, ChartLimitKeepsOnlyTheCutBeforeTheCutsAhead) {
+  const testmesh::Mesh m = ball_with_arms();
+  for (int limit : {2, 3, 4}) {
+    const ChartsResult r = atlas_of(m, ChartOptions().max_stretch, limit);
+    ASSERT_FALSE(r.error) << limit << ": " << message(r.error);
+    EXPECT_LE(int(r.charts.size()), limit);
+    EXPECT_GE(r.charts.size(), 2u);
+    EXPECT_TRUE(has_note_containing(r, "the chart limit (" + std::to_string(limit) + ") stopped the splitting")) << limit;
+    expect_valid_layout(m.F, r);
+  }
+}
+
 TEST(Atlas, CutsAheadOutOfRangeAreRefusedByName) {
   ChartOptions options;
   options.non_disk = NonDisk::Atlas;
