@@ -356,7 +356,9 @@ const double kLeastBodyShare = 0.67;
 struct Cut {
   std::vector<SolvedChart> pieces;
   std::vector<int> parent;
-  int ahead = 0;  // pieces cut ahead
+  int ahead() const {  // pieces cut ahead
+    return int(std::count_if(pieces.begin(), pieces.end(), [](const SolvedChart& p) { return p.cut_ahead; }));
+  }
 };
 
 // Empty if the chart cannot be cut into parts that are disks with holes (a part whose faces meet
@@ -377,7 +379,7 @@ Cut cut_with_cuts_ahead(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F,
   };
   if (!add_parts(chart.faces, -1)) return {};
   size_t cut_faces = chart.faces.size();
-  while (cut.ahead < ahead) {
+  for (int cuts = 0; cuts < ahead; ++cuts) {
     const size_t first = level_start.back();
     size_t largest = first;
     for (size_t j = first; j < cut.pieces.size(); ++j)
@@ -390,7 +392,6 @@ Cut cut_with_cuts_ahead(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F,
       break;
     }
     cut.pieces[largest].cut_ahead = true;
-    ++cut.ahead;
     cut_faces = faces;
   }
   // The meshes, built only now: a piece cut ahead never needs one. A part that is no disk with
@@ -409,7 +410,6 @@ Cut cut_with_cuts_ahead(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F,
     cut.pieces.resize(level_start[level]);
     cut.parent.resize(level_start[level]);
     level_start.resize(level);
-    cut.ahead = int(level) - 1;
     cut.pieces[from].cut_ahead = false;
     j = from;  // its mesh next
   }
@@ -423,7 +423,6 @@ void keep_only_the_first_cut(const Eigen::MatrixXd& unit_V, const Eigen::MatrixX
     cut.pieces.pop_back();
     cut.parent.pop_back();
   }
-  cut.ahead = 0;
   bool built = true;
   for (SolvedChart& piece : cut.pieces)
     if (piece.cut_ahead) {
@@ -480,6 +479,14 @@ const double kDecidingTolerance = 1e-8;
 // meshes give the same atlas, the others' efficiency moves by less than 1%).
 const double kSquareMayMeet = 1.5;
 
+// The map that decides whether a chart is cut: onto its own rectangle, or the square where that
+// may bring it under the bound (a chart too small to cut takes the better of the two).
+void map_to_decide(SolvedChart& chart, const Options& deciding, double max_stretch) {
+  const bool may_cut = int(chart.faces.size()) >= 2 * kSmallestChart;
+  solve(chart, deciding, 0, may_cut ? kSquareMayMeet * max_stretch : kInf);
+  chart.deciding_map = true;
+}
+
 // Cuts the charts that stretch too much and maps the parts again, round after round, until every
 // chart meets the bound, is too small to cut or the chart limit is reached; then undoes the cuts
 // that did not pay. Returns the leaves, and if any part was cut, the components as they were.
@@ -509,10 +516,7 @@ Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
     const size_t round_faces = faces_in(tree.nodes, first, end);
     for_each_index(int(end - first), [&](int i, int) {
       SolvedChart& chart = tree.nodes[first + size_t(i)];
-      if (chart.cut_ahead) return;
-      const bool may_cut = int(chart.faces.size()) >= 2 * kSmallestChart;
-      solve(chart, for_share(deciding, chart.faces.size(), round_faces), 0, may_cut ? kSquareMayMeet * options.max_stretch : kInf);
-      chart.deciding_map = true;
+      if (!chart.cut_ahead) map_to_decide(chart, for_share(deciding, chart.faces.size(), round_faces), options.max_stretch);
     }, largest_first(tree.nodes, first, end));
     // The charts the bound cuts, cut on both cores (a chart's parts depend on it alone: on the
     // 769k-face scan the cuts took 5.3 s on one); the chart limit is applied after, in order.
@@ -544,10 +548,10 @@ Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
         continue;
       }
       Cut& cut = cuts[k];
-      if (charts + int(cut.pieces.size()) - cut.ahead - 1 > options.max_charts)
+      if (charts + int(cut.pieces.size()) - cut.ahead() - 1 > options.max_charts)
         keep_only_the_first_cut(unit_V, F, cut, local_of[0]);
       if (cut.pieces.empty()) tree.nodes[i].kept_whole = "no cut into disks was found";
-      charts += std::max(0, int(cut.pieces.size()) - cut.ahead - 1);
+      charts += std::max(0, int(cut.pieces.size()) - cut.ahead() - 1);
       const size_t base = tree.nodes.size();
       for (size_t j = 0; j < cut.pieces.size(); ++j) {
         tree.parts[cut.parent[j] < 0 ? i : base + size_t(cut.parent[j])].push_back(int(tree.nodes.size()));
@@ -560,8 +564,7 @@ Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
   }
   undo_cuts_that_did_not_pay(tree, options.max_stretch, [&](SolvedChart& chart) {
     if (make_chart_mesh(unit_V, F, chart.faces, local_of[0], chart.mesh)) return false;
-    solve(chart, deciding, 0, kSquareMayMeet * options.max_stretch);
-    chart.deciding_map = true;
+    map_to_decide(chart, deciding, options.max_stretch);
     return !chart.map.error;
   });
   bool cut = false;
