@@ -29,7 +29,8 @@ struct ChartOptions {
   double gutter = 2;                   // in texels, from 0.5 to an eighth of texture_size
                                        // (between charts too)
   // A chart whose L2 stretch is above max_stretch, or that has a flipped or zero-area triangle,
-  // is cut in two, until max_charts; charts of fewer than 2 x kSmallestChart faces stay whole.
+  // is cut in two, until max_charts; charts of fewer than 2 x kSmallestChart faces stay whole
+  // unless they stretch more than twice the bound (and have 8 faces or more).
   double max_stretch = 1.2;            // at least 1
   int max_charts = 100000;             // at least 1
   // A chart far above the bound has its largest part cut again before any part is mapped, once

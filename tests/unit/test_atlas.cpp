@@ -270,6 +270,21 @@ TEST(Atlas, SliverWithNoGoodRectangleKeepsItsOwnShape) {
   EXPECT_LT(atlas.layout.l2_stretch, 1.5);
 }
 
+// A flat sheet with a spike: the spike's two parts (16 faces each) stretched L2 2.93 and 2.57 and
+// stayed whole as too small to cut, leaving the atlas at L2 2.26 (efficiency 0.17). A small chart
+// this far above the bound (twice) is cut after all, from 8 faces: 7 charts, L2 1.21 (0.47).
+TEST(Atlas, SmallChartFarAboveTheBoundIsCut) {
+  const testmesh::Mesh m = testmesh::grid(16, [](double x, double y) {
+    const double steps = 16 * std::max(std::abs(x - 0.5), std::abs(y - 0.5));  // from the tip, in grid steps
+    return steps < 0.5 ? 4.0 : steps < 1.5 ? 2.0 : 0.0;
+  });
+  const ChartsResult r = atlas_of(m);
+  expect_valid_layout(m.F, r);
+  for (size_t c = 0; c < r.charts.size(); ++c)
+    if (r.charts[c].faces >= 8) EXPECT_LE(r.charts[c].l2_stretch, 2 * ChartOptions().max_stretch) << "chart " << c;
+  EXPECT_LT(r.layout.l2_stretch, 1.6);
+}
+
 // A scan's dropouts: many one-face holes (here one per 57 faces), none touching another. A cut
 // that passes a hole can leave a part whose faces meet at one vertex; that vertex is split per
 // fan so the cut stands (without it, an armadillo with 200 such holes kept a 42690-face chart at
