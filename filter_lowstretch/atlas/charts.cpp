@@ -488,14 +488,7 @@ void map_to_decide(SolvedChart& chart, const Options& deciding, double max_stret
 }
 
 // A chart of fewer than 2 x kSmallestChart faces stays whole unless it stretches more than
-// kSmallCutAbove times the bound and has kSmallestCutChart faces or more: a spike's tip or a crease
-// left in a small part stretches so much (the diplodocus: parts of 7-34 faces at L2 15-1364 on
-// their rectangles) that it raised the whole atlas's L2 from about 1.15 to 1.44. Cutting those
-// took the diplodocus's efficiency 0.468 -> 0.722 and the mannequin devil's 0.687 -> 0.728; from
-// 2 faces instead of 8 a CAD blade was cut into 1296 charts, which no tiling could hold.
-const double kSmallCutAbove = 2;
-const int kSmallestCutChart = 8;  // faces
-
+// kSmallCutAbove times the bound and has kSmallestCutChart faces or more (charts.h).
 bool too_small_to_cut(const SolvedChart& chart, double max_stretch) {
   const int faces = int(chart.faces.size());
   if (faces >= 2 * kSmallestChart) return false;

@@ -30,7 +30,7 @@ struct ChartOptions {
                                        // (between charts too)
   // A chart whose L2 stretch is above max_stretch, or that has a flipped or zero-area triangle,
   // is cut in two, until max_charts; charts of fewer than 2 x kSmallestChart faces stay whole
-  // unless they stretch more than twice the bound (and have 8 faces or more).
+  // unless they stretch more than kSmallCutAbove times the bound and have kSmallestCutChart faces.
   double max_stretch = 1.2;            // at least 1
   int max_charts = 100000;             // at least 1
   // A chart far above the bound has its largest part cut again before any part is mapped, once
@@ -42,6 +42,14 @@ struct ChartOptions {
 // Smaller charts cut coarse models better (cow efficiency 0.516 at 50, 0.624 at 15) at the cost
 // of more seams and gutters (the 769k-face scan: 0.617 at 50, 0.607 at 15, 0.592 at 8).
 constexpr int kSmallestChart = 15;
+// A smaller chart is cut after all when it stretches more than kSmallCutAbove times the bound and
+// has kSmallestCutChart faces or more: a spike's tip or a crease left in a small part stretches so
+// much (the diplodocus: parts of 7-34 faces at L2 15-1364 on their rectangles) that it raised the
+// whole atlas's L2 from about 1.15 to 1.44. Cutting those took the diplodocus's efficiency 0.468 ->
+// 0.722 and the mannequin devil's 0.687 -> 0.728; from 2 faces instead of 8 a CAD blade was cut
+// into 1296 charts, which no tiling could hold.
+constexpr double kSmallCutAbove = 2;
+constexpr int kSmallestCutChart = 8;  // faces
 
 struct Chart {
   int faces = 0;

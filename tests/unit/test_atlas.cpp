@@ -281,7 +281,8 @@ TEST(Atlas, SmallChartFarAboveTheBoundIsCut) {
   const ChartsResult r = atlas_of(m);
   expect_valid_layout(m.F, r);
   for (size_t c = 0; c < r.charts.size(); ++c)
-    if (r.charts[c].faces >= 8) EXPECT_LE(r.charts[c].l2_stretch, 2 * ChartOptions().max_stretch) << "chart " << c;
+    if (r.charts[c].faces >= kSmallestCutChart)
+      EXPECT_LE(r.charts[c].l2_stretch, kSmallCutAbove * ChartOptions().max_stretch) << "chart " << c;
   EXPECT_LT(r.layout.l2_stretch, 1.6);
 }
 
