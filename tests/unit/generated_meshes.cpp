@@ -1,6 +1,7 @@
 #include "generated_meshes.h"
 
 #include <cmath>
+#include <map>
 #include <vector>
 
 namespace testmesh {
@@ -197,6 +198,29 @@ Mesh without_face(const Mesh& mesh, int face) {
   for (Eigen::Index f = 0, g = 0; f < mesh.F.rows(); ++f)
     if (f != face) m.F.row(g++) = mesh.F.row(f);
   return m;
+}
+
+Mesh cube(int n) {
+  // Each side: its origin and two edge directions whose cross product points out of the cube.
+  const int sides[6][9] = {{0, 0, 0, 0, 1, 0, 1, 0, 0}, {0, 0, 1, 1, 0, 0, 0, 1, 0}, {0, 0, 0, 1, 0, 0, 0, 0, 1},
+                           {0, 1, 0, 0, 0, 1, 1, 0, 0}, {0, 0, 0, 0, 0, 1, 0, 1, 0}, {1, 0, 0, 0, 1, 0, 0, 0, 1}};
+  const Mesh g = grid(n);
+  std::map<std::vector<long>, int> welded;  // the shared edges' vertices, by their grid position
+  std::vector<Eigen::RowVector3d> v;
+  std::vector<Eigen::RowVector3i> f;
+  for (const auto& side : sides) {
+    const Eigen::RowVector3d origin(side[0], side[1], side[2]), u(side[3], side[4], side[5]), w(side[6], side[7], side[8]);
+    std::vector<int> index(size_t(g.V.rows()));
+    for (Eigen::Index i = 0; i < g.V.rows(); ++i) {
+      const Eigen::RowVector3d p = origin + g.V(i, 0) * u + g.V(i, 1) * w;
+      const std::vector<long> key = {std::lround(p.x() * n), std::lround(p.y() * n), std::lround(p.z() * n)};
+      const auto found = welded.emplace(key, int(v.size()));
+      if (found.second) v.push_back(p);
+      index[size_t(i)] = found.first->second;
+    }
+    for (Eigen::Index t = 0; t < g.F.rows(); ++t) f.emplace_back(index[size_t(g.F(t, 0))], index[size_t(g.F(t, 1))], index[size_t(g.F(t, 2))]);
+  }
+  return from_lists(v, f);
 }
 
 }  // namespace testmesh

@@ -42,5 +42,8 @@ Mesh joined(const Mesh& a, const Mesh& b, double scale, const Eigen::RowVector3d
 Mesh soup(const Mesh& mesh);
 // Removes face `face` from the mesh (makes a hole or opens a closed mesh).
 Mesh without_face(const Mesh& mesh, int face);
+// The closed unit cube [0,1]^3, each side an n x n grid of grid(n)'s faces, sides welded: faces
+// 2 n^2 s .. 2 n^2 (s + 1) - 1 make side s.
+Mesh cube(int n);
 
 }  // namespace testmesh

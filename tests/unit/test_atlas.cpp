@@ -286,6 +286,21 @@ TEST(Atlas, SmallChartFarAboveTheBoundIsCut) {
   EXPECT_LT(r.layout.l2_stretch, 1.6);
 }
 
+// A model made of faces (a CAD part) is cut along its sharp edges: every side of a cube is one
+// chart (L2 1.08, from the cells' shapes). Cut by stretch alone, the cube stays one chart.
+TEST(Atlas, ModelMadeOfFacesIsCutAlongItsSharpEdges) {
+  const int n = 8, side_faces = 2 * n * n;
+  const testmesh::Mesh m = testmesh::cube(n);
+  const ChartsResult r = atlas_of(m);
+  expect_valid_layout(m.F, r);
+  ASSERT_EQ(r.charts.size(), 6u);
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+    EXPECT_EQ(r.face_chart[size_t(f)], r.face_chart[size_t(f - f % side_faces)]) << "face " << f;
+  for (int side = 1; side < 6; ++side) EXPECT_NE(r.face_chart[size_t(side * side_faces)], r.face_chart[0]) << "side " << side;
+  EXPECT_LT(r.layout.l2_stretch, 1.1);  // every side flat: only its cell's shape, not a square, stretches it
+  EXPECT_TRUE(has_note_containing(r, "sharp edges")) << "the note says why the charts are the cube's sides";
+}
+
 // A scan's dropouts: many one-face holes (here one per 57 faces), none touching another. A cut
 // that passes a hole can leave a part whose faces meet at one vertex; that vertex is split per
 // fan so the cut stands (without it, an armadillo with 200 such holes kept a 42690-face chart at
