@@ -5,12 +5,14 @@
 
 namespace lowstretch {
 
-std::vector<int> face_components(const Eigen::MatrixXi& F, int& count) {
+std::vector<int> face_components(const Eigen::MatrixXi& F, int& count, const std::function<bool(int, int)>& joins) {
   const int m = int(F.rows());
   UnionFind faces(m);
   const std::vector<int> twin = opposite_half_edges(F);
-  for (int h = 0; h < 3 * m; ++h)
-    if (twin[size_t(h)] >= 0) faces.unite(h / 3, twin[size_t(h)] / 3);
+  for (int h = 0; h < 3 * m; ++h) {
+    const int t = twin[size_t(h)];
+    if (t >= 0 && (!joins || joins(h, t))) faces.unite(h / 3, t / 3);
+  }
   std::vector<int> number(static_cast<size_t>(m), -1), component(static_cast<size_t>(m));
   count = 0;
   for (int f = 0; f < m; ++f) {
