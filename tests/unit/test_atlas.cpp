@@ -301,6 +301,27 @@ TEST(Atlas, ModelMadeOfFacesIsCutAlongItsSharpEdges) {
   EXPECT_TRUE(has_note_containing(r, "sharp edges")) << "the note says why the charts are the cube's sides";
 }
 
+// A bar of a cube is tried cut three ways (by stretch, along its sides, along them to a tighter
+// bound): the progress that MeshLab's bar shows goes on from where it was rather than starting again.
+TEST(Atlas, ProgressNeverGoesBack) {
+  testmesh::Mesh m = testmesh::cube(8);
+  m.V.col(0) *= 3;  // a bar: the first atlas cuts it in more rounds than it has sides
+  ChartOptions options;
+  options.non_disk = NonDisk::Atlas;
+  double last = -1;
+  int reports = 0, backwards = 0;
+  options.disk.progress = [&](double fraction, const char*) {
+    backwards += fraction < last;
+    last = fraction;
+    ++reports;
+    return true;
+  };
+  const ChartsResult r = parameterize_charts(m.V, m.F, options);
+  ASSERT_FALSE(r.error) << message(r.error);
+  EXPECT_GT(reports, 10);  // each atlas reports its rounds of cuts (without the clamp, 2 steps back)
+  EXPECT_EQ(backwards, 0);
+}
+
 // A scan's dropouts: many one-face holes (here one per 57 faces), none touching another. A cut
 // that passes a hole can leave a part whose faces meet at one vertex; that vertex is split per
 // fan so the cut stands (without it, an armadillo with 200 such holes kept a 42690-face chart at
