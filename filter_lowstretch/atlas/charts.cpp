@@ -20,6 +20,7 @@
 #include "half_edges.h"
 #include "mesh_components.h"
 #include "one_blas_thread.h"
+#include "plane_projection.h"
 #include "rectangle_layout.h"
 #include "sharp_patches.h"
 #include "split_chart.h"
@@ -600,31 +601,71 @@ Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
 // 2: 0.604, 4: 0.614).
 const double kFreeMustPay = 4;
 
-// A chart kept above the bound on its rectangle (too small to cut, or its parts stretched more)
-// is mapped again with the natural boundary, and keeps that map if it uses its box better
-// (fill / L2^2) and does not fold over itself: a jagged sliver has no good rectangle (a 37-face
-// strip of a scan: L2 46.7 on its rectangle, 1.0 free).
+// The chart's own shape seen along its normal, as a free map (one pass, already the map).
+void map_as_seen_along_normal(SolvedChart& chart) {
+  chart.free_boundary = true;
+  chart.deciding_map = false;
+  chart.map = Result();
+  chart.map.uv = project_onto_own_plane(chart.mesh.V, chart.mesh.F.topRows(Eigen::Index(chart.faces.size())));
+  chart.kept = measure_real_faces(chart.mesh, chart.map.uv);
+  chart.passes = {chart.kept};
+  PassMetrics only;
+  only.l2_stretch = chart.kept.l2_stretch;
+  only.flipped = chart.kept.flipped;
+  only.degenerate = chart.kept.degenerate;
+  chart.map.passes = {only};
+  chart.box.setEmpty();
+  for (size_t j = 0; j < chart.faces.size(); ++j)
+    for (int k = 0; k < 3; ++k) chart.box.extend(chart.map.uv.row(chart.mesh.F(Eigen::Index(j), k)).transpose());
+}
+
+// A chart whose rectangle uses its box poorly (kept above the bound: too small to cut, or its parts
+// stretched more; or a hole closed for the map left empty) is mapped again free: with the natural
+// boundary, or seen along its normal (a flat face of a CAD part, whose needles the natural boundary
+// folds). It keeps the free map that uses its box best (fill / L2^2) if that beats the rectangle
+// `must_pay` times and it does not fold over itself: a jagged sliver has no good rectangle (a
+// 37-face strip of a scan: L2 46.7 on its rectangle, 1.0 free).
 void free_the_charts_that_stretch(std::vector<SolvedChart>& charts, const ChartOptions& options, double must_pay = kFreeMustPay) {
   std::vector<int> above;
-  // A free map covers at most its box at L2 at least 1: it can pay only above L2 sqrt(must_pay).
+  // What a chart's map makes of its box: fill / L2^2 (a rectangle with a closed hole fills less than 1).
+  const auto uses = [](const SolvedChart& c) {
+    return c.kept.flipped + c.kept.degenerate > 0 ? 0 : c.fill() / (c.kept.l2_stretch * c.kept.l2_stretch);
+  };
+  // A free map covers at most its box at L2 at least 1: it can pay only below 1 / must_pay.
   for (size_t i = 0; i < charts.size(); ++i)
-    if (charts[i].kept.flipped + charts[i].kept.degenerate > 0 || !(charts[i].kept.l2_stretch <= std::sqrt(must_pay)))
-      above.push_back(int(i));
+    if (!(uses(charts[i]) * must_pay > 1)) above.push_back(int(i));
   size_t above_faces = 0;
   for (const int i : above) above_faces += charts[size_t(i)].faces.size();
   for_each_index(int(above.size()), [&](int k, int) {
     SolvedChart& chart = charts[size_t(above[size_t(k)])];
-    SolvedChart free;
-    free.mesh = chart.mesh;
-    free.faces = chart.faces;
-    free.kept_whole = chart.kept_whole;
-    solve_onto(free, for_share(options.disk, chart.faces.size(), above_faces), 0, true);
-    if (free.map.error || free.kept.flipped + free.kept.degenerate > 0) return;
-    const double rectangle = chart.kept.flipped + chart.kept.degenerate > 0 ? 0 : 1 / (chart.kept.l2_stretch * chart.kept.l2_stretch);
-    if (!(free.fill() / (free.kept.l2_stretch * free.kept.l2_stretch) > must_pay * rectangle)) return;
-    if (uv_boundary_crosses_itself(free.mesh.F.topRows(Eigen::Index(free.faces.size())), free.map.uv)) return;
-    chart = std::move(free);
+    double best = must_pay * uses(chart);
+    for (const bool seen_along_normal : {false, true}) {
+      SolvedChart free;
+      free.mesh = chart.mesh;
+      free.faces = chart.faces;
+      free.kept_whole = chart.kept_whole;
+      if (seen_along_normal) map_as_seen_along_normal(free);
+      else solve_onto(free, for_share(options.disk, chart.faces.size(), above_faces), 0, true);
+      if (free.map.error || free.kept.flipped + free.kept.degenerate > 0) continue;
+      if (!(uses(free) > best)) continue;
+      if (uv_boundary_crosses_itself(free.mesh.F.topRows(Eigen::Index(free.faces.size())), free.map.uv)) continue;
+      best = uses(free);
+      chart = std::move(free);
+    }
   });
+}
+
+// A free chart stretched along its box's sides to the box's width / height `aspect` (a map the
+// method made is scaled, not solved again), and measured again.
+void stretch_to_aspect(SolvedChart& chart, double aspect) {
+  const double by = aspect / chart.aspect();
+  chart.map.uv.col(0) *= std::sqrt(by);
+  chart.map.uv.col(1) /= std::sqrt(by);
+  chart.box.setEmpty();
+  for (size_t j = 0; j < chart.faces.size(); ++j)
+    for (int k = 0; k < 3; ++k) chart.box.extend(chart.map.uv.row(chart.mesh.F(Eigen::Index(j), k)).transpose());
+  chart.kept = measure_real_faces(chart.mesh, chart.map.uv);
+  chart.passes.at(size_t(chart.map.chosen_pass)) = chart.kept;
 }
 
 // Above this share of the texture in cells raised to the smallest a gutter allows, a note says so.
@@ -682,7 +723,10 @@ Error lay_out(std::vector<SolvedChart>& charts, const ChartOptions& options, Eig
     // filled only in part: stretching the chart to fit would cost more than the empty texels.
     const double fits = turned[size_t(i)] ? 1 / cell : cell;
     const double wanted = std::min(c.aspect() * kMostCellMismatch, std::max(c.aspect() / kMostCellMismatch, fits));
-    if (c.free_boundary) return;  // its shape is kept: it fills the part of its cell of that shape
+    if (c.free_boundary) {  // stretched to its cell's shape as far as a rectangle would be
+      if (std::abs(std::log(wanted / c.aspect())) > 0.02) stretch_to_aspect(c, wanted);
+      return;
+    }
     // A map made while deciding where to cut had fewer passes and a looser solve.
     if (std::abs(std::log(wanted / c.aspect())) > 0.02 || c.deciding_map) solve(c, for_share(options.disk, c.faces.size(), all_faces), wanted);
   }, largest_first(charts, 0, charts.size()));
@@ -917,9 +961,10 @@ const double kSharpEdgeDegrees = 80;
 // or less (their sharp edges are creases and spikes).
 const double kFacesShare = 0.01;
 // A face of a model cut along its sharp edges is mostly a plane, a cylinder or a fillet, which a free
-// boundary maps with little stretch; so a free map need pay less than on a statue (efficiency at 1 /
-// 2 / 4: couplingdown 0.523 / 0.526 / 0.500, rotor 0.475 / 0.486 / 0.486, anchor 0.401 / 0.441 / 0.441).
-const double kFreeFacesMustPay = 2;
+// map keeps with little stretch; so a free map need pay less than on a statue. Which of these pays
+// best depends on the part, so both are laid out (tool's efficiency, free maps paying 1 / 2 / either:
+// joint 0.814 / 0.670 / 0.814, couplingdown 0.556 / 0.528 / 0.556, anchor 0.428 / 0.474 / 0.474).
+const double kFreeFacesMustPay[] = {2, 1};
 // A model made of faces is also cut to a tighter bound, this share of the default's excess over 1
 // (1.2 -> 1.1): its faces are mostly flat, so more cuts leave charts that fill their rectangles
 // with little stretch (tool's efficiency cut to 1.2 / 1.1: rotor 0.486 / 0.599, dragknob 0.640 / 0.833,
@@ -994,6 +1039,7 @@ ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, cons
   std::vector<std::vector<int>> patches;
   if (above) patches = patches_between_sharp_edges(unit_V, F, kSharpEdgeDegrees);
   if (patches.size() > part_count && has_faces_of_its_own(unit_V, F, component, patches)) {
+    const double best_before = texture_efficiency(result);
     for (const double excess_kept : {1.0, kFacesExcessKept}) {
       ChartOptions by_faces_options = reporting;
       by_faces_options.max_stretch = 1 + excess_kept * (options.max_stretch - 1);
@@ -1002,16 +1048,19 @@ ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, cons
       const Error e = split_until_bounded(unit_V, F, patches, by_faces_options, by_faces_leaves, unused, by_faces_notes);
       if (e.code == ErrorCode::Cancelled) return failed(e);
       if (e) continue;
-      free_the_charts_that_stretch(by_faces_leaves, options, kFreeFacesMustPay);
-      ChartsResult by_faces = atlas_of(std::move(by_faces_leaves), unit_V, F, unit, int(V.rows()), options);
-      if (!(texture_efficiency(by_faces) > texture_efficiency(result))) continue;
-      by_faces_notes.push_back("charts cut along the sharp edges first (a model made of faces)" +
-                               std::string(excess_kept < 1 ? ", to L2 stretch " + number_text(by_faces_options.max_stretch) : "") +
-                               ": efficiency " + number_text(texture_efficiency(by_faces)) + " (coverage / L2^2) against " +
-                               number_text(texture_efficiency(result)));
-      result = std::move(by_faces);
-      notes.resize(common_notes);  // the first cut's notes go with its atlas
-      notes.insert(notes.end(), by_faces_notes.begin(), by_faces_notes.end());
+      for (const double must_pay : kFreeFacesMustPay) {
+        std::vector<SolvedChart> leaves_of_try = by_faces_leaves;
+        free_the_charts_that_stretch(leaves_of_try, options, must_pay);
+        ChartsResult by_faces = atlas_of(std::move(leaves_of_try), unit_V, F, unit, int(V.rows()), options);
+        if (!(texture_efficiency(by_faces) > texture_efficiency(result))) continue;
+        result = std::move(by_faces);
+        notes.resize(common_notes);  // the first cut's notes go with its atlas
+        notes.insert(notes.end(), by_faces_notes.begin(), by_faces_notes.end());
+        notes.push_back("charts cut along the sharp edges first (a model made of faces)" +
+                        std::string(excess_kept < 1 ? ", to L2 stretch " + number_text(by_faces_options.max_stretch) : "") +
+                        ": efficiency " + number_text(texture_efficiency(result)) + " (coverage / L2^2) against " +
+                        number_text(best_before));
+      }
     }
   }
   result.notes.insert(result.notes.begin(), notes.begin(), notes.end());

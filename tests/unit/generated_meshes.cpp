@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <map>
+#include <set>
 #include <vector>
 
 namespace testmesh {
@@ -220,6 +221,31 @@ Mesh cube(int n) {
     }
     for (Eigen::Index t = 0; t < g.F.rows(); ++t) f.emplace_back(index[size_t(g.F(t, 0))], index[size_t(g.F(t, 1))], index[size_t(g.F(t, 2))]);
   }
+  return from_lists(v, f);
+}
+
+Mesh plate_with_hole(int n, double thickness) {
+  const Mesh g = grid(n);
+  std::vector<Eigen::RowVector3i> top;
+  for (Eigen::Index f = 0; f < g.F.rows(); ++f) {
+    const Eigen::RowVector3d c = (g.V.row(g.F(f, 0)) + g.V.row(g.F(f, 1)) + g.V.row(g.F(f, 2))) / 3;
+    if (std::abs(c.x() - 0.5) > 0.25 || std::abs(c.y() - 0.5) > 0.25) top.push_back(g.F.row(f));
+  }
+  // Grid vertex i is i on top and i + (n + 1)^2 at the bottom.
+  const int below = int(g.V.rows());
+  std::vector<Eigen::RowVector3d> v;
+  for (Eigen::Index i = 0; i < g.V.rows(); ++i) v.emplace_back(g.V(i, 0), g.V(i, 1), thickness);
+  for (Eigen::Index i = 0; i < g.V.rows(); ++i) v.emplace_back(g.V(i, 0), g.V(i, 1), 0.0);
+  std::vector<Eigen::RowVector3i> f = top;
+  for (const Eigen::RowVector3i& t : top) f.emplace_back(t(0) + below, t(2) + below, t(1) + below);
+  std::set<std::pair<int, int>> edges;
+  for (const Eigen::RowVector3i& t : top)
+    for (int k = 0; k < 3; ++k) edges.emplace(t(k), t((k + 1) % 3));
+  for (const std::pair<int, int>& e : edges)
+    if (!edges.count({e.second, e.first})) {  // a boundary edge a -> b of the top: the wall hangs below it
+      f.emplace_back(e.second, e.first, e.first + below);
+      f.emplace_back(e.second, e.first + below, e.second + below);
+    }
   return from_lists(v, f);
 }
 
