@@ -235,6 +235,16 @@ struct SolvedChart {
   }
 };
 
+// What a chart costs in texture at one texel density: its area times L2^2, over the share of its
+// box it fills where it has closed holes (their texels are lost; a rectangle without holes fills
+// its box but for its ears' bulge, which every chart shares). Counting the holes cut CAD parts'
+// faces with holes open: efficiency rotor 0.601 -> 0.721, turbine 0.443 -> 0.611.
+double texture_cost(const SolvedChart& chart) {
+  const ChartPass& p = chart.kept;
+  const double fill = chart.mesh.closed_holes > 0 ? chart.fill() : 1;
+  return p.flipped + p.degenerate > 0 || !(fill > 0) ? kInf : p.area_3d * p.l2_stretch * p.l2_stretch / fill;
+}
+
 // The tips of a chart's boundary ears go a quarter of their chord out of the rectangle: a cut
 // along mesh edges leaves many ears, which a straight side squeezes to slivers (an 830k-face
 // scan: L2 2.69 without, 1.46 with).
@@ -242,6 +252,12 @@ const double kEarBulge = 0.25;
 
 bool needs_split(const ChartPass& p, double max_stretch) {
   return p.flipped + p.degenerate > 0 || !(p.l2_stretch <= max_stretch);
+}
+
+// Whether the bound cuts a chart: it folds or stretches more than the bound, or its closed holes
+// waste as much texture as stretching to the bound would.
+bool bound_cuts(const SolvedChart& chart, double max_stretch) {
+  return needs_split(chart.kept, max_stretch) || texture_cost(chart) > chart.kept.area_3d * max_stretch * max_stretch;
 }
 
 // The method on a chart whose mesh is built, onto a rectangle of `aspect` (0: its own), or with
@@ -441,13 +457,13 @@ struct ChartTree {
 };
 
 // Undoes the cuts that did not pay: bottom up, a chart whose parts (all its leaves) together
-// stretch at least as much as it does alone becomes a leaf again, so that its seams go. A cut
-// that pays only after further cuts is kept: the leaves are compared, not the first parts. A
-// chart cut ahead has no map: `map_cut_ahead` maps it when its leaves stretch more than the bound
+// cost at least as much texture (texture_cost) as it does alone becomes a leaf again, so that its
+// seams go. A cut that pays only after further cuts is kept: the leaves are compared, not the
+// first parts. A chart cut ahead has no map: `map_cut_ahead` maps it when its leaves stretch more than the bound
 // on average (its cut may not have paid); otherwise, or if it cannot be mapped, it stays cut.
 void undo_cuts_that_did_not_pay(ChartTree& tree, double max_stretch, const std::function<bool(SolvedChart&)>& map_cut_ahead) {
   const size_t n = tree.nodes.size();
-  std::vector<double> weighted(n, 0.0);  // over each node's leaves: sum A L2^2 (the leaves cover its area)
+  std::vector<double> weighted(n, 0.0);  // over each node's leaves: their texture_cost (the leaves cover its area)
   std::vector<double> area(n, 0.0);      // and sum A
   for (size_t i = n; i-- > 0;) {
     SolvedChart& node = tree.nodes[i];
@@ -458,7 +474,7 @@ void undo_cuts_that_did_not_pay(ChartTree& tree, double max_stretch, const std::
     if (node.cut_ahead && weighted[i] > max_stretch * max_stretch * area[i] && map_cut_ahead(node)) node.cut_ahead = false;
     const ChartPass& alone = node.kept;
     const bool valid = alone.flipped + alone.degenerate == 0 && !node.cut_ahead;  // no map: stays cut
-    const double own = valid ? alone.area_3d * alone.l2_stretch * alone.l2_stretch : kInf;
+    const double own = valid ? texture_cost(node) : kInf;
     if (!tree.parts[i].empty()) {
       if (!(own <= weighted[i]) || !valid) continue;  // an invalid chart stays cut
       tree.parts[i].clear();
@@ -534,7 +550,7 @@ Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
     for (size_t i = first; i < end; ++i) {
       if (tree.nodes[i].cut_ahead) continue;
       if (tree.nodes[i].map.error) return tree.nodes[i].map.error;
-      if (!needs_split(tree.nodes[i].kept, options.max_stretch)) continue;
+      if (!bound_cuts(tree.nodes[i], options.max_stretch)) continue;
       if (too_small_to_cut(tree.nodes[i], options.max_stretch)) tree.nodes[i].kept_whole = "too few faces to cut";
       else to_cut.push_back(int(i));
     }
