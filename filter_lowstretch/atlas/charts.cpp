@@ -459,8 +459,9 @@ struct ChartTree {
 // Undoes the cuts that did not pay: bottom up, a chart whose parts (all its leaves) together
 // cost at least as much texture (texture_cost) as it does alone becomes a leaf again, so that its
 // seams go. A cut that pays only after further cuts is kept: the leaves are compared, not the
-// first parts. A chart cut ahead has no map: `map_cut_ahead` maps it when its leaves stretch more than the bound
-// on average (its cut may not have paid); otherwise, or if it cannot be mapped, it stays cut.
+// first parts. A chart cut ahead has no map: `map_cut_ahead` maps it when its leaves cost more
+// than the bound's stretch would (its cut may not have paid); otherwise, or if it cannot be
+// mapped, it stays cut.
 void undo_cuts_that_did_not_pay(ChartTree& tree, double max_stretch, const std::function<bool(SolvedChart&)>& map_cut_ahead) {
   const size_t n = tree.nodes.size();
   std::vector<double> weighted(n, 0.0);  // over each node's leaves: their texture_cost (the leaves cover its area)
@@ -981,7 +982,7 @@ const double kFacesShare = 0.01;
 // best depends on the part, so both are laid out (tool's efficiency, free maps paying 1 / 2 / either:
 // joint 0.814 / 0.670 / 0.814, couplingdown 0.556 / 0.528 / 0.556, anchor 0.428 / 0.474 / 0.474).
 const double kFreeFacesMustPay[] = {2, 1};
-// A model made of faces is also cut to a tighter bound, this share of the default's excess over 1
+// A model made of faces is also cut to a tighter bound, this share of the bound's excess over 1
 // (1.2 -> 1.1): its faces are mostly flat, so more cuts leave charts that fill their rectangles
 // with little stretch (tool's efficiency cut to 1.2 / 1.1: rotor 0.486 / 0.599, dragknob 0.640 / 0.833,
 // fandisk 0.759 / 0.798).
