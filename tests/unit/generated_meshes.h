@@ -45,8 +45,8 @@ Mesh without_face(const Mesh& mesh, int face);
 // The closed unit cube [0,1]^3, each side an n x n grid of grid(n)'s faces, sides welded: faces
 // 2 n^2 s .. 2 n^2 (s + 1) - 1 make side s.
 Mesh cube(int n);
-// A closed square plate: the top side (z = thickness) is grid(n) without its middle half (a
-// square hole), the first faces in grid order; then the bottom side, then one quad of wall per
+// A closed square plate: the top side (z = thickness) is grid(n) without the middle square of
+// half its side (a hole of a quarter of its area), the first faces in grid order; then the bottom side, then one quad of wall per
 // boundary edge. A flat face with a hole, as CAD parts have.
 Mesh plate_with_hole(int n, double thickness);
 
