@@ -224,6 +224,12 @@ struct SolvedChart {
   bool free_boundary = false;  // mapped with the natural boundary: its shape is kept in its cell
   bool cut_ahead = false;  // cut again before it was mapped (cuts_ahead): it has no map
   double aspect() const { return box.sizes().y() > 0 ? box.sizes().x() / box.sizes().y() : 1; }  // width / height
+  // box := the box of the real faces' UV, after the map changed.
+  void fit_box() {
+    box.setEmpty();
+    for (size_t j = 0; j < faces.size(); ++j)
+      for (int k = 0; k < 3; ++k) box.extend(map.uv.row(mesh.F(Eigen::Index(j), k)).transpose());
+  }
   // The share of its box that its real faces cover (about 1 on a rectangle).
   double fill() const {
     double area = 0;
@@ -275,9 +281,7 @@ void solve_onto(SolvedChart& chart, Options options, double aspect, bool free_bo
   chart.map = parameterize(chart.mesh.V, chart.mesh.F, options);
   if (chart.map.error) return;
   chart.kept = chart.passes.at(size_t(chart.map.chosen_pass));
-  chart.box.setEmpty();
-  for (size_t j = 0; j < chart.faces.size(); ++j)
-    for (int k = 0; k < 3; ++k) chart.box.extend(chart.map.uv.row(chart.mesh.F(Eigen::Index(j), k)).transpose());
+  chart.fit_box();
 }
 
 // Fewer flipped and zero-area triangles first, then lower L2 stretch (as parameterize ranks passes).
@@ -631,9 +635,7 @@ void map_as_seen_along_normal(SolvedChart& chart) {
   only.flipped = chart.kept.flipped;
   only.degenerate = chart.kept.degenerate;
   chart.map.passes = {only};
-  chart.box.setEmpty();
-  for (size_t j = 0; j < chart.faces.size(); ++j)
-    for (int k = 0; k < 3; ++k) chart.box.extend(chart.map.uv.row(chart.mesh.F(Eigen::Index(j), k)).transpose());
+  chart.fit_box();
 }
 
 // A chart whose rectangle uses its box poorly (kept above the bound: too small to cut, or its parts
@@ -678,9 +680,7 @@ void stretch_to_aspect(SolvedChart& chart, double aspect) {
   const double by = aspect / chart.aspect();
   chart.map.uv.col(0) *= std::sqrt(by);
   chart.map.uv.col(1) /= std::sqrt(by);
-  chart.box.setEmpty();
-  for (size_t j = 0; j < chart.faces.size(); ++j)
-    for (int k = 0; k < 3; ++k) chart.box.extend(chart.map.uv.row(chart.mesh.F(Eigen::Index(j), k)).transpose());
+  chart.fit_box();
   chart.kept = measure_real_faces(chart.mesh, chart.map.uv);
   chart.passes.at(size_t(chart.map.chosen_pass)) = chart.kept;
 }
