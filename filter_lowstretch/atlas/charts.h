@@ -1,11 +1,12 @@
 // A low-stretch atlas of any manifold mesh: every connected component becomes a disk chart
-// (holes closed virtually, closed or higher-genus parts cut open along short seams), each chart
-// gets the paper's low-stretch map onto a rectangle, a chart that stretches more than a bound is
-// cut in two (split_chart.h; also one whose closed holes leave too much of its rectangle empty)
-// and mapped again (a chart no rectangle fits keeps its own shape: natural boundary, or seen along
-// its normal, plane_projection.h), and the charts' rectangles tile the unit square
-// (rectangle_layout.h). A model made of faces (a CAD part) is also cut along its sharp edges first
-// (sharp_patches.h); the atlas that uses the texture best is kept.
+// (holes closed virtually, closed or higher-genus parts cut open along short seams;
+// solved_chart.h), each chart gets the paper's low-stretch map onto a rectangle, a chart that
+// stretches more than a bound is cut in two (split_until_bounded.h; also one whose closed holes
+// leave too much of its rectangle empty) and mapped again (a chart no rectangle fits keeps its own
+// shape: free_charts.h), and the charts' rectangles tile the unit square (lay_out_charts.h); the
+// layout is measured as MeshLab stores it (atlas_result.h). A model made of faces (a CAD part) is
+// also cut along its sharp edges first (sharp_patches.h); the atlas that uses the texture best is
+// kept.
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/Geometry>

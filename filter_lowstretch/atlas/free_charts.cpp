@@ -1,0 +1,61 @@
+#include "free_charts.h"
+
+#include <utility>
+
+#include "boundary_crossing.h"
+#include "chart_threads.h"
+#include "plane_projection.h"
+
+namespace lowstretch {
+
+namespace {
+
+// The chart's own shape seen along its normal, as a free map (one pass, already the map).
+void map_as_seen_along_normal(SolvedChart& chart) {
+  chart.free_boundary = true;
+  chart.deciding_map = false;
+  chart.map = Result();
+  chart.map.uv = project_onto_own_plane(chart.mesh.V, chart.mesh.F.topRows(Eigen::Index(chart.faces.size())));
+  chart.kept = measure_real_faces(chart.mesh, chart.map.uv);
+  chart.passes = {chart.kept};
+  PassMetrics only;
+  only.l2_stretch = chart.kept.l2_stretch;
+  only.flipped = chart.kept.flipped;
+  only.degenerate = chart.kept.degenerate;
+  chart.map.passes = {only};
+  chart.fit_box();
+}
+
+}  // namespace
+
+void free_the_charts_that_stretch(std::vector<SolvedChart>& charts, const ChartOptions& options, double must_pay) {
+  std::vector<int> above;
+  // What a chart's map makes of its box: fill / L2^2 (a rectangle with a closed hole fills less than 1).
+  const auto uses = [](const SolvedChart& c) {
+    return c.kept.flipped + c.kept.degenerate > 0 ? 0 : c.fill() / (c.kept.l2_stretch * c.kept.l2_stretch);
+  };
+  // A free map covers at most its box at L2 at least 1: it can pay only below 1 / must_pay.
+  for (size_t i = 0; i < charts.size(); ++i)
+    if (!(uses(charts[i]) * must_pay > 1)) above.push_back(int(i));
+  size_t above_faces = 0;
+  for (const int i : above) above_faces += charts[size_t(i)].faces.size();
+  for_each_index(int(above.size()), [&](int k, int) {
+    SolvedChart& chart = charts[size_t(above[size_t(k)])];
+    double best = must_pay * uses(chart);
+    for (const bool seen_along_normal : {false, true}) {
+      SolvedChart free;
+      free.mesh = chart.mesh;
+      free.faces = chart.faces;
+      free.kept_whole = chart.kept_whole;
+      if (seen_along_normal) map_as_seen_along_normal(free);
+      else solve_onto(free, for_share(options.disk, chart.faces.size(), above_faces), 0, true);
+      if (free.map.error || free.kept.flipped + free.kept.degenerate > 0) continue;
+      if (!(uses(free) > best)) continue;
+      if (uv_boundary_crosses_itself(free.mesh.F.topRows(Eigen::Index(free.faces.size())), free.map.uv)) continue;
+      best = uses(free);
+      chart = std::move(free);
+    }
+  });
+}
+
+}  // namespace lowstretch
