@@ -5,8 +5,8 @@
 // leave too much of its rectangle empty) and mapped again (a chart no rectangle fits keeps its own
 // shape: free_charts.h), and the charts' rectangles tile the unit square (lay_out_charts.h); the
 // layout is measured as MeshLab stores it (atlas_result.h). A model made of faces (a CAD part) is
-// also cut along its sharp edges first (sharp_patches.h); the atlas that uses the texture best is
-// kept.
+// also cut along its sharp edges first (sharp_patches.h; at 80 degrees, and at 30 while its atlas
+// uses the texture poorly); the atlas that uses the texture best is kept.
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/Geometry>
