@@ -118,7 +118,8 @@ struct FacesCut {
 // stretch (tool's efficiency cut to 1.2 / 1.1: rotor 0.486 / 0.599, dragknob 0.640 / 0.833, fandisk
 // 0.759 / 0.798). Edges sharper than 30 degrees also part a large face from its fillets, whose
 // rectangles stretched (couplingdown 0.556 -> 0.643, anchor 0.474 -> 0.552, turbine 0.611 -> 0.627;
-// instead of the second cut, fandisk fell 0.807 -> 0.784; 20 or 45 degrees gained less).
+// instead of the second cut, fandisk fell 0.807 -> 0.784; at 20 or 45 degrees couplingdown reached
+// 0.600 or 0.560).
 const FacesCut kFacesCuts[] = {{kSharpEdgeDegrees, 1}, {kSharpEdgeDegrees, 0.5}, {30, 0.5}};
 // A cut along gentler edges is tried only while the best atlas has a lower efficiency: it took a
 // quarter more time (rotor 0.18 -> 0.24 s, fandisk 1.05 -> 1.33 s, medians of 5) and gained
