@@ -134,10 +134,7 @@ bool has_faces_of_its_own(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
   double total = 0;
   for (const std::vector<int>& patch : patches) {
     double area = 0;
-    for (const int f : patch) {
-      const Eigen::Vector3d a = unit_V.row(F(f, 0)), b = unit_V.row(F(f, 1)), c = unit_V.row(F(f, 2));
-      area += 0.5 * (b - a).cross(c - a).norm();
-    }
+    for (const int f : patch) area += face_area_3d(unit_V, F, f);
     const size_t part = size_t(component[size_t(patch.front())]);
     if (largest.size() <= part) largest.resize(part + 1, 0);
     largest[part] = std::max(largest[part], area);

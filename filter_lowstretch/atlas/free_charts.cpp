@@ -50,9 +50,10 @@ void free_the_charts_that_stretch(std::vector<SolvedChart>& charts, const ChartO
       if (seen_along_normal) map_as_seen_along_normal(free);
       else solve_onto(free, for_share(options.disk, chart.faces.size(), above_faces), 0, true);
       if (free.map.error || free.kept.flipped + free.kept.degenerate > 0) continue;
-      if (!(uses(free) > best)) continue;
+      const double used = uses(free);
+      if (!(used > best)) continue;
       if (uv_boundary_crosses_itself(free.mesh.F.topRows(Eigen::Index(free.faces.size())), free.map.uv)) continue;
-      best = uses(free);
+      best = used;
       chart = std::move(free);
     }
   });

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "half_edges.h"
+#include "stretch.h"
 
 namespace lowstretch {
 
@@ -42,8 +43,8 @@ SplitFans split_vertex_fans(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) 
 Eigen::VectorXd join_vertex_values(const SplitFans& split, const Eigen::VectorXd& value, int input_vertices) {
   Eigen::VectorXd area = Eigen::VectorXd::Zero(split.V.rows());
   for (Eigen::Index f = 0; f < split.F.rows(); ++f) {
-    const Eigen::Vector3d a = split.V.row(split.F(f, 0)), b = split.V.row(split.F(f, 1)), c = split.V.row(split.F(f, 2));
-    for (int k = 0; k < 3; ++k) area(split.F(f, k)) += 0.5 * (b - a).cross(c - a).norm();
+    const double face_area = face_area_3d(split.V, split.F, f);
+    for (int k = 0; k < 3; ++k) area(split.F(f, k)) += face_area;
   }
   Eigen::VectorXd weighted = Eigen::VectorXd::Zero(input_vertices), total = Eigen::VectorXd::Zero(input_vertices);
   Eigen::VectorXd joined = value.head(input_vertices);

@@ -20,10 +20,9 @@ FaceStretch face_stretch(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, con
   s.valid.resize(m);
   double total_uv = 0, total_3d = 0;
   for (Eigen::Index f = 0; f < m; ++f) {
-    const Eigen::Vector3d p1 = V.row(F(f, 0)), p2 = V.row(F(f, 1)), p3 = V.row(F(f, 2));
     const double s1 = UV(F(f, 0), 0), s2 = UV(F(f, 1), 0), s3 = UV(F(f, 2), 0);
     const double t1 = UV(F(f, 0), 1), t2 = UV(F(f, 1), 1), t3 = UV(F(f, 2), 1);
-    s.area_3d(f) = 0.5 * (p2 - p1).cross(p3 - p1).norm();
+    s.area_3d(f) = face_area_3d(V, F, f);
     s.area_uv(f) = 0.5 * ((s2 - s1) * (t3 - t1) - (s3 - s1) * (t2 - t1));
     total_uv += std::abs(s.area_uv(f));
     total_3d += s.area_3d(f);

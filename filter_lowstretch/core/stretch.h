@@ -2,6 +2,7 @@
 // paper's distortion metrics.
 #pragma once
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <vector>
 
 #include "method_types.h"
@@ -19,6 +20,12 @@ struct FaceStretch {
   double normalization = 1;
   int flipped = 0, degenerate = 0;
 };
+
+// Area of face f of the mesh (V, F) in 3D.
+inline double face_area_3d(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, Eigen::Index f) {
+  const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
+  return 0.5 * (b - a).cross(c - a).norm();
+}
 
 // Signed area of the UV triangle abc, positive when counter-clockwise.
 inline double signed_uv_area(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
