@@ -31,11 +31,12 @@ const double kMostFlooredShare = 0.1;
 Error lay_out(std::vector<SolvedChart>& charts, const ChartOptions& options, Eigen::Index face_count, ChartsResult& result) {
   // Half the gutter around every cell, in [0,1]^2 before store() moves it into [g, 1 - g]^2.
   const double g = options.gutter / options.texture_size, inset = 0.5 * g / (1 - 2 * g);
-  // A free chart's cell holds its box at the texel density of the others.
+  // A chart that does not fill its box (a free chart, a rectangle with closed holes) gets a cell
+  // that holds its box at the texel density of the others.
   std::vector<double> own_area;
   double total = 0;
   for (const SolvedChart& c : charts) {
-    own_area.push_back(c.free_boundary ? c.kept.area_3d / std::max(c.fill(), 0.05) : c.kept.area_3d);
+    own_area.push_back(c.free_boundary || c.mesh.closed_holes > 0 ? c.kept.area_3d / std::max(c.fill(), 0.05) : c.kept.area_3d);
     total += own_area.back();
   }
   std::vector<double> preferred;

@@ -307,6 +307,26 @@ TEST(Charts, DisjointDisksGetOneChartEachAtTheSameTexelDensity) {
     if (c != big) EXPECT_NEAR(uv[size_t(big)] / uv[size_t(c)], 4.0, 4e-3) << "chart " << c;
 }
 
+// A grid with a hole closed for its solve and a grid without: the holed chart's cell holds the
+// hole's empty texels too, so that both charts have one texel density (its cell once held only
+// its area, squeezing it into part of its share).
+TEST(Charts, ChartWithAClosedHoleHasTheTexelDensityOfTheOthers) {
+  const testmesh::Mesh m = testmesh::joined(testmesh::punched_grid(20, {{0.5, 0.5}}, 0.25), testmesh::grid(20), 1,
+                                            Eigen::RowVector3d(3, 0, 0));
+  const ChartsResult r = fine_charts_of(m);
+  ASSERT_FALSE(r.error) << message(r.error);
+  ASSERT_EQ(r.charts.size(), 2u);
+  const int holed = r.face_chart[0];
+  ASSERT_EQ(r.charts[size_t(holed)].closed_holes, 1);
+  std::vector<double> area(2, 0.0), uv(2, 0.0);
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f) {
+    const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), c = m.V.row(m.F(f, 2));
+    area[size_t(r.face_chart[size_t(f)])] += 0.5 * (b - a).cross(c - a).norm();
+    uv[size_t(r.face_chart[size_t(f)])] += signed_area(corner(r, f, 0), corner(r, f, 1), corner(r, f, 2));
+  }
+  EXPECT_NEAR((uv[0] / area[0]) / (uv[1] / area[1]), 1.0, 0.05);
+}
+
 // Two copies of one curved disk: they get cells of one shape, so the same map, and every pass over
 // the whole mesh has the stretch of that pass of either copy.
 TEST(Charts, PassesOverTheWholeMeshOfTwoEqualDisksAreThoseOfOne) {
