@@ -152,10 +152,10 @@ void store(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, int vertex_r
   measure_layout(unit_V, F, vertex_rows, faces_of, result);
 }
 
-ChartsResult atlas_of(std::vector<SolvedChart> charts, const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, double unit,
-                      int vertex_rows, const ChartOptions& options) {
+ChartsResult atlas_of(std::vector<SolvedChart> charts, const std::vector<int>& guests, const Eigen::MatrixXd& unit_V,
+                      const Eigen::MatrixXi& F, double unit, int vertex_rows, const ChartOptions& options) {
   ChartsResult result;
-  if (Error e = lay_out(charts, options, F.rows(), result)) return failed_result(e);
+  if (Error e = lay_out(charts, options, F.rows(), guests, result)) return failed_result(e);
   std::vector<std::vector<int>> faces_of;
   std::vector<std::vector<ChartPass>> passes;
   std::vector<int> kept;

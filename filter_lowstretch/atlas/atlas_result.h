@@ -13,9 +13,10 @@ namespace lowstretch {
 // A result that carries only `error`.
 ChartsResult failed_result(Error error);
 
-// The charts laid out and measured as the result.
-ChartsResult atlas_of(std::vector<SolvedChart> charts, const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, double unit,
-                      int vertex_rows, const ChartOptions& options);
+// The charts laid out and measured as the result; the guests go into texels the tiling leaves
+// empty (lay_out).
+ChartsResult atlas_of(std::vector<SolvedChart> charts, const std::vector<int>& guests, const Eigen::MatrixXd& unit_V,
+                      const Eigen::MatrixXi& F, double unit, int vertex_rows, const ChartOptions& options);
 
 // The layout as MeshLab stores it: inside the gutter, rounded to float, then measured; counts
 // the triangles no texture shows (smaller than a texel of 4096^2) and those that rounding flips or

@@ -10,7 +10,9 @@
 
 #include "atlas_result.h"
 #include "disk_mesh.h"
+#include "empty_texels.h"
 #include "free_charts.h"
+#include "lay_out_charts.h"
 #include "mesh_components.h"
 #include "one_blas_thread.h"
 #include "sharp_patches.h"
@@ -143,6 +145,12 @@ bool has_faces_of_its_own(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
   return total - std::accumulate(largest.begin(), largest.end(), 0.0) >= kFacesShare * total;
 }
 
+// An atlas's charts, kept while it is the best tried, and those that could go into empty texels.
+struct ToNest {
+  std::vector<SolvedChart> charts;
+  std::vector<int> guests;
+};
+
 // Any mesh as charts: its components, cut until they meet the bound, laid out; or one chart per
 // component if that uses the texture better.
 ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options) {
@@ -174,15 +182,27 @@ ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, cons
   free_the_charts_that_stretch(leaves, options);
   const size_t cut_into = leaves.size();
   const bool bound_cut = !uncut.empty();
-  ChartsResult result = atlas_of(std::move(leaves), unit_V, F, unit, int(V.rows()), options);
+  // Each atlas tried is tiled; the charts of the one kept so far are kept too when some of them
+  // could go into texels the tiling leaves empty, which is tried on the kept atlas only. (Tried on
+  // every atlas, it gave the anchor 0.691 instead of 0.681 and the spool 0.674 instead of 0.633,
+  // but took the rotor 0.22 -> 0.32 s and the joint 0.08 -> 0.14 s, one run each.)
+  ToNest kept, tried;
+  const auto tile = [&](std::vector<SolvedChart> charts) {
+    tried.guests = charts_to_put_in_empty_texels(charts, cell_areas(charts));
+    tried.charts = tried.guests.empty() ? std::vector<SolvedChart>() : charts;
+    return atlas_of(std::move(charts), {}, unit_V, F, unit, int(V.rows()), options);
+  };
+  ChartsResult result = tile(std::move(leaves));
+  kept = std::move(tried);
   if (!uncut.empty() && !(texture_efficiency(result) > kClearlyBetter * best_possible_efficiency(uncut))) {
-    ChartsResult whole = atlas_of(std::move(uncut), unit_V, F, unit, int(V.rows()), options);
+    ChartsResult whole = tile(std::move(uncut));
     if (texture_efficiency(whole) > texture_efficiency(result) || (texture_efficiency(whole) == texture_efficiency(result) &&
                                                                    whole.layout.flipped + whole.layout.degenerate <
                                                                        result.layout.flipped + result.layout.degenerate)) {
-      whole.notes.push_back("one chart per part: cut into " + std::to_string(cut_into) + " charts, the atlas had efficiency " +
-                            number_text(texture_efficiency(result)) + " (coverage / L2^2) against " + number_text(texture_efficiency(whole)));
+      notes.push_back("one chart per part: cut into " + std::to_string(cut_into) + " charts, the atlas had efficiency " +
+                      number_text(texture_efficiency(result)) + " (coverage / L2^2) against " + number_text(texture_efficiency(whole)));
       result = std::move(whole);
+      kept = std::move(tried);
     }
   }
   // A model made of faces (a CAD part) whose parts the bound cuts, or would cut but for the undo,
@@ -207,9 +227,10 @@ ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, cons
       for (const double must_pay : kFreeFacesMustPay) {
         std::vector<SolvedChart> leaves_of_try = by_faces_leaves;
         free_the_charts_that_stretch(leaves_of_try, options, must_pay);
-        ChartsResult by_faces = atlas_of(std::move(leaves_of_try), unit_V, F, unit, int(V.rows()), options);
+        ChartsResult by_faces = tile(std::move(leaves_of_try));
         if (!(texture_efficiency(by_faces) > texture_efficiency(result))) continue;
         result = std::move(by_faces);
+        kept = std::move(tried);
         notes.resize(common_notes);  // the first cut's notes go with its atlas
         notes.insert(notes.end(), by_faces_notes.begin(), by_faces_notes.end());
         notes.push_back("charts cut along the sharp edges first (a model made of faces; normals more than " +
@@ -218,6 +239,15 @@ ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, cons
                         ": efficiency " + number_text(texture_efficiency(result)) + " (coverage / L2^2) against " +
                         number_text(best_before));
       }
+    }
+  }
+  if (!kept.guests.empty()) {
+    ChartsResult nested = atlas_of(std::move(kept.charts), kept.guests, unit_V, F, unit, int(V.rows()), options);
+    if (!nested.error && texture_efficiency(nested) > texture_efficiency(result)) {
+      nested.notes.push_back(std::to_string(kept.guests.size()) + " small charts put into texels the tiling left empty: efficiency " +
+                             number_text(texture_efficiency(nested)) + " (coverage / L2^2) against " +
+                             number_text(texture_efficiency(result)));
+      result = std::move(nested);
     }
   }
   result.notes.insert(result.notes.begin(), notes.begin(), notes.end());

@@ -6,7 +6,8 @@
 // shape: free_charts.h), and the charts' rectangles tile the unit square (lay_out_charts.h); the
 // layout is measured as MeshLab stores it (atlas_result.h). A model made of faces (a CAD part) is
 // also cut along its sharp edges first (sharp_patches.h; at 80 degrees, and at 30 while its atlas
-// uses the texture poorly); the atlas that uses the texture best is kept.
+// uses the texture poorly); the atlas that uses the texture best is kept, and laid out again
+// with small charts in the texels its tiling leaves empty (empty_texels.h) if that is better.
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/Geometry>

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -415,4 +416,59 @@ TEST(Atlas, TinyPartsThatTakeMuchOfTheTextureAreNoted) {
   ASSERT_FALSE(r.error) << message(r.error);
   EXPECT_TRUE(has_note_containing(r, "4000 charts too small for the 1024-texel texture"));
   EXPECT_TRUE(has_note_containing(r, "Remove Isolated pieces"));
+}
+
+// The least distance between two triangles that do not overlap: from a corner of one to a side of
+// the other.
+double triangle_distance(const Eigen::Vector2d a[3], const Eigen::Vector2d b[3]) {
+  const auto to_side = [](const Eigen::Vector2d& p, const Eigen::Vector2d& s, const Eigen::Vector2d& t) {
+    const double along = std::min(1.0, std::max(0.0, (p - s).dot(t - s) / (t - s).squaredNorm()));
+    return (p - (s + along * (t - s))).norm();
+  };
+  double least = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) {
+      least = std::min(least, to_side(a[i], b[k], b[(k + 1) % 3]));
+      least = std::min(least, to_side(b[i], a[k], a[(k + 1) % 3]));
+    }
+  return least;
+}
+
+// A plate's top keeps its hole at bound 1.5 (HoleThatWastesTheBoxIsCutOpen); the small squares
+// beside it go into the texels that hole leaves empty rather than into cells of their own: inside
+// the top's box, at the texel density of the others, a gutter away from every other chart's
+// triangles (their boxes now overlap, so the gutter is measured between triangles).
+TEST(Atlas, SmallChartsGoIntoTexelsTheTilingLeavesEmpty) {
+  testmesh::Mesh m = testmesh::plate_with_hole(8, 1.0 / 8);
+  for (int i = 0; i < 12; ++i) m = testmesh::joined(m, testmesh::grid(3), 0.15, Eigen::RowVector3d(3 + i, 0, 0));
+  const ChartsResult r = atlas_of(m, 1.5);
+  expect_valid_layout(m.F, r);
+  EXPECT_TRUE(has_note_containing(r, "put into texels the tiling left empty"));
+  std::vector<Eigen::AlignedBox2d> box(r.charts.size());
+  std::vector<double> uv(r.charts.size(), 0.0), area(r.charts.size(), 0.0);
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f) {
+    const size_t c = size_t(r.face_chart[size_t(f)]);
+    for (int k = 0; k < 3; ++k) box[c].extend(corner(r, f, k));
+    const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), d = m.V.row(m.F(f, 2));
+    area[c] += 0.5 * (b - a).cross(d - a).norm();
+    uv[c] += signed_area(corner(r, f, 0), corner(r, f, 1), corner(r, f, 2));
+  }
+  const size_t top = size_t(r.face_chart[0]);
+  int inside_top = 0;
+  for (size_t c = 0; c < r.charts.size(); ++c)
+    if (c != top && box[top].contains(box[c])) {
+      ++inside_top;
+      EXPECT_NEAR((uv[c] / area[c]) / (uv[top] / area[top]), 1.0, 0.05) << "chart " << c;
+    }
+  EXPECT_GT(inside_top, 0);
+  const double gutter = ChartOptions().gutter / ChartOptions().texture_size;
+  double least = std::numeric_limits<double>::infinity();
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+    for (Eigen::Index g = f + 1; g < m.F.rows(); ++g) {
+      if (r.face_chart[size_t(f)] == r.face_chart[size_t(g)]) continue;
+      const Eigen::Vector2d a[3] = {corner(r, f, 0), corner(r, f, 1), corner(r, f, 2)};
+      const Eigen::Vector2d b[3] = {corner(r, g, 0), corner(r, g, 1), corner(r, g, 2)};
+      least = std::min(least, triangle_distance(a, b));
+    }
+  EXPECT_GE(least, gutter * (1 - 1e-6));
 }
