@@ -14,8 +14,6 @@ namespace {
 // A guest takes at most this share of the texels the tiling is expected to leave empty: holes and
 // free outlines leave ragged room, which boxes fill only in part.
 const double kGuestsShareOfEmpty = 0.5;
-// Below this share of empty texels there is nothing worth filling (statues tile at 0.95 or more).
-const double kLeastEmptyShare = 0.05;
 // A chart whose real faces cover this share of its box is seen as its box.
 const double kLeastGuestFill = 0.9;
 // The grid is the texture's texels up to this many per side, coarser beyond (a 65536^2 grid

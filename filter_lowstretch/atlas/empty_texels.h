@@ -12,6 +12,9 @@
 
 namespace lowstretch {
 
+// Below this share of empty texels there is nothing worth filling (statues tile at 0.95 or more).
+constexpr double kLeastEmptyShare = 0.05;
+
 // The charts worth taking out of the tiling to be put into empty texels: rectangles that fill
 // their box (a box is all the placement sees), smallest first, while their area stays under a
 // share of the texture the tiling is expected to leave empty (closed holes, free charts' cells).
