@@ -244,9 +244,8 @@ ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, cons
   if (!kept.guests.empty() && result.coverage < 1 - kLeastEmptyShare) {
     ChartsResult nested = atlas_of(std::move(kept.charts), kept.guests, unit_V, F, unit, int(V.rows()), options);
     if (!nested.error && texture_efficiency(nested) > texture_efficiency(result)) {
-      nested.notes.push_back(std::to_string(kept.guests.size()) + " small charts put into texels the tiling left empty: efficiency " +
-                             number_text(texture_efficiency(nested)) + " (coverage / L2^2) against " +
-                             number_text(texture_efficiency(result)));
+      nested.notes.push_back("with small charts in empty texels the atlas has efficiency " + number_text(texture_efficiency(nested)) +
+                             " (coverage / L2^2) against " + number_text(texture_efficiency(result)));
       result = std::move(nested);
     }
   }

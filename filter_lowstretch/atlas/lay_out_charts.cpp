@@ -177,6 +177,7 @@ Error lay_out(std::vector<SolvedChart>& charts, const ChartOptions& options, Eig
     const std::vector<int> unplaced = left.empty() ? left : put_in_empty_texels(charts, left, options, result.corner_uv, result.face_chart);
     if (unplaced.empty()) {
       result.notes.insert(result.notes.end(), notes.begin(), notes.end());
+      if (!left.empty()) result.notes.push_back(std::to_string(left.size()) + " small charts put into texels the tiling left empty");
       return {};
     }
     if (round + 1 == kMostGuestRounds) return {ErrorCode::ChartsNotPacked, static_cast<long long>(charts.size()), ""};
