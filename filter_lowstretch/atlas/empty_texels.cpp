@@ -108,15 +108,6 @@ void take_triangle(TexelGrid& grid, const Eigen::Vector2d p[3]) {
   }
 }
 
-double real_uv_area(const SolvedChart& chart) {
-  double area = 0;
-  for (size_t j = 0; j < chart.faces.size(); ++j) {
-    const auto corner = [&](int k) { return Eigen::Vector2d(chart.map.uv.row(chart.mesh.F(Eigen::Index(j), k)).transpose()); };
-    area += std::abs(signed_uv_area(corner(0), corner(1), corner(2)));
-  }
-  return area;
-}
-
 }  // namespace
 
 std::vector<int> charts_to_put_in_empty_texels(const std::vector<SolvedChart>& charts, const std::vector<double>& own_area) {
@@ -162,14 +153,13 @@ std::vector<int> put_in_empty_texels(const std::vector<SolvedChart>& charts, con
       take_triangle(grid, p);
     }
   }
-  // Grown by the gutter; the border's gutter too.
-  TexelGrid& with_gutter = grid;
-  with_gutter.grow(gutter);
-  with_gutter.take(0, 0, side, gutter);
-  with_gutter.take(0, side - gutter, side, side);
-  with_gutter.take(0, 0, gutter, side);
-  with_gutter.take(side - gutter, 0, side, side);
-  with_gutter.count_runs(0, side);
+  // Grown by the gutter; the border's gutter too. From here a taken cell is one a guest may not use.
+  grid.grow(gutter);
+  grid.take(0, 0, side, gutter);
+  grid.take(0, side - gutter, side, side);
+  grid.take(0, 0, gutter, side);
+  grid.take(side - gutter, 0, side, side);
+  grid.count_runs(0, side);
   const double density = area_3d > 0 ? uv_area / area_3d : 0;  // grid cells^2 per unit of 3D area
 
   std::vector<int> unplaced;
@@ -179,7 +169,7 @@ std::vector<int> put_in_empty_texels(const std::vector<SolvedChart>& charts, con
   });
   for (const int g : order) {
     const SolvedChart& chart = charts[size_t(g)];
-    const double own = real_uv_area(chart);
+    const double own = chart.uv_area();
     if (!(density > 0) || !(own > 0) || !(chart.box.sizes().minCoeff() > 0)) {
       unplaced.push_back(g);
       continue;
@@ -190,7 +180,7 @@ std::vector<int> put_in_empty_texels(const std::vector<SolvedChart>& charts, con
     for (const bool turn : {false, true}) {
       const int w = int(std::floor(turn ? size.y() : size.x())) + 1, h = int(std::floor(turn ? size.x() : size.y())) + 1;
       int x = 0, y = 0;
-      if (!with_gutter.first_fit(w, h, x, y)) continue;
+      if (!grid.first_fit(w, h, x, y)) continue;
       if (!found || std::make_pair(y, x) < std::make_pair(best_y, best_x)) best_x = x, best_y = y, turned = turn, found = true;
     }
     if (!found) {
@@ -199,8 +189,8 @@ std::vector<int> put_in_empty_texels(const std::vector<SolvedChart>& charts, con
     }
     const Eigen::Vector2d cells = turned ? Eigen::Vector2d(size.y(), size.x()) : size;
     const int w = int(std::floor(cells.x())) + 1, h = int(std::floor(cells.y())) + 1;
-    with_gutter.take(best_x - gutter, best_y - gutter, best_x + w + gutter, best_y + h + gutter);
-    with_gutter.count_runs(best_y - gutter, best_y + h + gutter);
+    grid.take(best_x - gutter, best_y - gutter, best_x + w + gutter, best_y + h + gutter);
+    grid.count_runs(best_y - gutter, best_y + h + gutter);
     const Eigen::Vector2d origin(best_x, best_y);
     for (size_t j = 0; j < chart.faces.size(); ++j) {
       const int f = chart.faces[j];

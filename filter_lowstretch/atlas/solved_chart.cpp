@@ -38,14 +38,16 @@ void SolvedChart::fit_box() {
     for (int k = 0; k < 3; ++k) box.extend(map.uv.row(mesh.F(Eigen::Index(j), k)).transpose());
 }
 
-double SolvedChart::fill() const {
+double SolvedChart::uv_area() const {
   double area = 0;
   for (size_t j = 0; j < faces.size(); ++j) {
     const auto corner = [&](int k) { return Eigen::Vector2d(map.uv.row(mesh.F(Eigen::Index(j), k)).transpose()); };
     area += std::abs(signed_uv_area(corner(0), corner(1), corner(2)));
   }
-  return box.volume() > 0 ? std::min(1.0, area / box.volume()) : 0;
+  return area;
 }
+
+double SolvedChart::fill() const { return box.volume() > 0 ? std::min(1.0, uv_area() / box.volume()) : 0; }
 
 bool charts_can_fix(ErrorCode code) {
   return code == ErrorCode::SeveralComponents || code == ErrorCode::Closed || code == ErrorCode::SeveralBoundaryLoops ||

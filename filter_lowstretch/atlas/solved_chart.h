@@ -57,6 +57,8 @@ struct SolvedChart {
   double aspect() const { return box.sizes().y() > 0 ? box.sizes().x() / box.sizes().y() : 1; }  // width / height
   // box := the box of the real faces' UV, after the map changed.
   void fit_box();
+  // The area of its real faces' UV, in its map's units.
+  double uv_area() const;
   // The share of its box that its real faces cover (about 1 on a rectangle).
   double fill() const;
 };
