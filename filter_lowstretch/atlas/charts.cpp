@@ -145,12 +145,6 @@ bool has_faces_of_its_own(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
   return total - std::accumulate(largest.begin(), largest.end(), 0.0) >= kFacesShare * total;
 }
 
-// An atlas's charts, kept while it is the best tried, and those that could go into empty texels.
-struct ToNest {
-  std::vector<SolvedChart> charts;
-  std::vector<int> guests;
-};
-
 // Any mesh as charts: its components, cut until they meet the bound, laid out; or one chart per
 // component if that uses the texture better.
 ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options) {
@@ -182,14 +176,14 @@ ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, cons
   free_the_charts_that_stretch(leaves, options);
   const size_t cut_into = leaves.size();
   const bool bound_cut = !uncut.empty();
-  // Each atlas tried is tiled; the charts of the one kept so far are kept too when some of them
-  // could go into texels the tiling leaves empty, which is tried on the kept atlas only. (Tried on
-  // every atlas, it gave the anchor 0.691 instead of 0.681 and the spool 0.674 instead of 0.633,
-  // but took the rotor 0.22 -> 0.32 s and the joint 0.08 -> 0.14 s, one run each.)
-  ToNest kept, tried;
+  // Each atlas tried is tiled; the charts of the one kept so far are kept too when its tiling is
+  // expected to leave texels empty: small charts are put into them on the kept atlas only. (Boxes
+  // put into every atlas tried gave the anchor 0.691 instead of 0.681 and the spool 0.674 instead
+  // of 0.633, but took the rotor 0.22 -> 0.32 s and the joint 0.08 -> 0.14 s, one run each.)
+  std::vector<SolvedChart> kept, tried;
   const auto tile = [&](std::vector<SolvedChart> charts) {
-    tried.guests = charts_to_put_in_empty_texels(charts, cell_areas(charts));
-    tried.charts = tried.guests.empty() ? std::vector<SolvedChart>() : charts;
+    const bool leaves_room = expected_empty_share(charts, cell_areas(charts)) >= kLeastEmptyShare;
+    tried = leaves_room ? charts : std::vector<SolvedChart>();
     return atlas_of(std::move(charts), {}, unit_V, F, unit, int(V.rows()), options);
   };
   ChartsResult result = tile(std::move(leaves));
@@ -241,11 +235,18 @@ ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, cons
       }
     }
   }
-  if (!kept.guests.empty() && result.coverage < 1 - kLeastEmptyShare) {
-    ChartsResult nested = atlas_of(std::move(kept.charts), kept.guests, unit_V, F, unit, int(V.rows()), options);
-    if (!nested.error && texture_efficiency(nested) > texture_efficiency(result)) {
+  if (!kept.empty() && result.coverage < 1 - kLeastEmptyShare) {
+    const double tiled = texture_efficiency(result);
+    const std::vector<double> own_area = cell_areas(kept);
+    std::vector<int> last_guests;
+    for (const GuestChoice& choice : kGuestChoices) {
+      std::vector<int> guests = charts_to_put_in_empty_texels(kept, own_area, choice);
+      if (guests.empty() || guests == last_guests) continue;
+      last_guests = guests;
+      ChartsResult nested = atlas_of(kept, guests, unit_V, F, unit, int(V.rows()), options);
+      if (nested.error || !(texture_efficiency(nested) > texture_efficiency(result))) continue;
       nested.notes.push_back("with small charts in empty texels the atlas has efficiency " + number_text(texture_efficiency(nested)) +
-                             " (coverage / L2^2) against " + number_text(texture_efficiency(result)));
+                             " (coverage / L2^2) against " + number_text(tiled));
       result = std::move(nested);
     }
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <numeric>
 
@@ -11,9 +12,6 @@ namespace lowstretch {
 
 namespace {
 
-// A guest takes at most this share of the texels the tiling is expected to leave empty: holes and
-// free outlines leave ragged room, which boxes fill only in part.
-const double kGuestsShareOfEmpty = 0.5;
 // A chart whose real faces cover this share of its box is seen as its box.
 const double kLeastGuestFill = 0.9;
 // The grid is the texture's texels up to this many per side, coarser beyond (a 65536^2 grid
@@ -24,59 +22,91 @@ const int kMostGridSide = 2048;
 // cell how many free cells follow it in its row: a box fits where every row it spans has room.
 class TexelGrid {
  public:
-  explicit TexelGrid(int side) : side_(side), taken_(size_t(side) * size_t(side), 0), run_(taken_.size(), 0) {}
+  explicit TexelGrid(int side)
+      : side_(side), taken_(size_t(side) * size_t(side), 0), run_(taken_.size(), 0), widest_(size_t(side), 0) {}
   int side() const { return side_; }
   void take(int x0, int y0, int x1, int y1) {  // cells [x0, x1) x [y0, y1), clipped
     x0 = std::max(x0, 0), y0 = std::max(y0, 0), x1 = std::min(x1, side_), y1 = std::min(y1, side_);
-    for (int y = y0; y < y1; ++y)
-      for (int x = x0; x < x1; ++x) taken_[index(x, y)] = 1;
+    for (int y = y0; y < y1 && x0 < x1; ++y) std::fill(taken_.begin() + long(index(x0, y)), taken_.begin() + long(index(x1, y)), 1);
   }
-  // Takes every cell within `by` cells of a taken one (rows, then columns: a square around each).
+  // Takes every cell within `by` cells of a taken one (a square around each): each row ORed with
+  // its neighbours `by` cells either way, then with the rows `by` above and below (whole rows at
+  // a time, which the compiler vectorizes; a column at a time strides through memory).
   void grow(int by) {
-    const auto grow_lines = [&](size_t line_step, size_t cell_step) {
-      std::vector<char> near(static_cast<size_t>(side_), 0);
-      for (int line = 0; line < side_; ++line) {
-        char* cells = taken_.data() + size_t(line) * line_step;
-        for (int i = 0, last = -by - 1; i < side_; ++i) {
-          if (cells[size_t(i) * cell_step]) last = i;
-          near[size_t(i)] = i - last <= by;
-        }
-        for (int i = side_ - 1, next = side_ + by; i >= 0; --i) {
-          if (cells[size_t(i) * cell_step]) next = i;
-          cells[size_t(i) * cell_step] = near[size_t(i)] || next - i <= by;
-        }
+    const size_t n = size_t(side_);
+    std::vector<char> row(n);
+    for (size_t y = 0; y < n; ++y) {
+      char* __restrict cells = taken_.data() + y * n;
+      const char* __restrict before = row.data();
+      std::copy(cells, cells + n, row.begin());
+      for (size_t shift = 1; shift <= size_t(by) && shift < n; ++shift) {
+        for (size_t x = 0; x + shift < n; ++x) cells[x] |= before[x + shift];
+        for (size_t x = shift; x < n; ++x) cells[x] |= before[x - shift];
       }
-    };
-    grow_lines(size_t(side_), 1);  // rows
-    grow_lines(1, size_t(side_));  // columns
+    }
+    std::vector<char> grown(taken_.size());
+    for (size_t y = 0; y < n; ++y) {
+      char* out = grown.data() + y * n;
+      const size_t first = y >= size_t(by) ? y - size_t(by) : 0, last = std::min(n - 1, y + size_t(by));
+      std::copy(taken_.data() + first * n, taken_.data() + (first + 1) * n, out);
+      for (size_t near = first + 1; near <= last; ++near) {
+        const char* cells = taken_.data() + near * n;
+        for (size_t x = 0; x < n; ++x) out[x] |= cells[x];
+      }
+    }
+    taken_.swap(grown);
   }
   // Free cells: how many free cells start there; taken ones: minus how many taken cells do, so
   // that a search skips a taken stretch at once.
   void count_runs(int y0, int y1) {
     for (int y = std::max(y0, 0); y < std::min(y1, side_); ++y) {
-      int free = 0, taken = 0;
+      int free = 0, taken = 0, widest = 0;
       for (int x = side_; x-- > 0;) {
         const bool is_taken = taken_[index(x, y)] != 0;
         free = is_taken ? 0 : free + 1;
         taken = is_taken ? taken + 1 : 0;
         run_[index(x, y)] = is_taken ? -taken : free;
+        widest = std::max(widest, free);
       }
+      widest_[size_t(y)] = widest;
     }
   }
-  // The first place (lowest row, then column) where a w x h box of free cells fits; false if none.
-  bool first_fit(int w, int h, int& at_x, int& at_y) const {
-    for (int y = 0; y + h <= side_; ++y)
-      for (int x = 0; x + w <= side_;) {
-        int blocked = -1;
-        for (int k = 0; k < h && blocked < 0; ++k)
-          if (run_[index(x, y + k)] < w) blocked = k;
-        if (blocked < 0) {
+  bool taken(int x, int y) const { return taken_[index(x, y)] != 0; }
+  // The first place (lowest row, then column; rows up to last_y) where an outline's cells are all
+  // free; false if none. rows[r]: the outline's runs of cells [begin, end) in its row r.
+  bool first_fit(const std::vector<std::vector<std::pair<int, int>>>& rows, int last_y, int& at_x, int& at_y) const {
+    const int height = int(rows.size());
+    int width = 0;
+    std::vector<int> widest_run(rows.size(), 0), order;  // rows with runs, widest run first: they fail soonest
+    for (int r = 0; r < height; ++r) {
+      for (const auto& run : rows[size_t(r)]) {
+        width = std::max(width, run.second);
+        widest_run[size_t(r)] = std::max(widest_run[size_t(r)], run.second - run.first);
+      }
+      if (widest_run[size_t(r)] > 0) order.push_back(r);
+    }
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return widest_run[size_t(a)] > widest_run[size_t(b)]; });
+    for (int y = 0; y + height <= side_ && y <= last_y; ++y) {
+      // Rows whose widest free stretch is too narrow rule out this y at once (most rows of a tiling).
+      if (std::any_of(order.begin(), order.end(), [&](int r) { return widest_[size_t(y + r)] < widest_run[size_t(r)]; })) continue;
+      for (int x = 0; x + width <= side_;) {
+        int skip = 0;
+        for (const int r : order) {
+          for (const auto& run : rows[size_t(r)]) {
+            const int free = run_[index(x + run.first, y + r)];
+            if (free >= run.second - run.first) continue;
+            skip = free < 0 ? -free : free + 1;  // past the taken cells, or past the one that ends the free ones
+            break;
+          }
+          if (skip) break;
+        }
+        if (skip == 0) {
           at_x = x, at_y = y;
           return true;
         }
-        const int run = run_[index(x, y + blocked)];
-        x += run < 0 ? -run : run + 1;  // past the taken cells, or to the taken cell that ends the free ones
+        x += skip;
       }
+    }
     return false;
   }
 
@@ -85,6 +115,7 @@ class TexelGrid {
   int side_;
   std::vector<char> taken_;
   std::vector<int> run_;
+  std::vector<int> widest_;  // per row: its longest stretch of free cells
 };
 
 // Takes every cell that the triangle touches: row by row, the cells under the x-extent of the
@@ -108,24 +139,64 @@ void take_triangle(TexelGrid& grid, const Eigen::Vector2d p[3]) {
   }
 }
 
+// A guest at one quarter turn and texel density: its corners in cells from its box's corner
+// (3 per real face), and the cells its triangles touch as runs per row.
+struct Outline {
+  std::vector<Eigen::Vector2d> corners;
+  std::vector<std::vector<std::pair<int, int>>> rows;
+};
+
+Outline outline_of(const SolvedChart& chart, const Eigen::Vector2d& size, int turns) {
+  const Eigen::Vector2d cells = turns % 2 ? Eigen::Vector2d(size.y(), size.x()) : size;
+  Outline outline;
+  outline.corners.reserve(3 * chart.faces.size());
+  for (size_t j = 0; j < chart.faces.size(); ++j)
+    for (int k = 0; k < 3; ++k) {
+      Eigen::Vector2d q = ((chart.map.uv.row(chart.mesh.F(Eigen::Index(j), k)).transpose() - chart.box.min()).array() /
+                           chart.box.sizes().array()).matrix();
+      for (int t = 0; t < turns; ++t) q = Eigen::Vector2d(1 - q.y(), q.x());  // quarter turns counter-clockwise, as the tiling's
+      outline.corners.push_back(q.cwiseProduct(cells));
+    }
+  const int w = int(std::floor(cells.x())) + 1, h = int(std::floor(cells.y())) + 1;
+  TexelGrid local(std::max(w, h));
+  for (size_t j = 0; j < chart.faces.size(); ++j) take_triangle(local, &outline.corners[3 * j]);
+  outline.rows.resize(size_t(h));
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (local.taken(x, y) && (x == 0 || !local.taken(x - 1, y))) {
+        int end = x + 1;
+        while (end < w && local.taken(end, y)) ++end;
+        outline.rows[size_t(y)].push_back({x, end});
+      }
+  return outline;
+}
+
+// A chart whose cell its faces do not fill: a free outline, or closed holes.
+bool leaves_texels_empty(const SolvedChart& chart) { return chart.free_boundary || chart.mesh.closed_holes > 0; }
+
 }  // namespace
 
-std::vector<int> charts_to_put_in_empty_texels(const std::vector<SolvedChart>& charts, const std::vector<double>& own_area) {
+double expected_empty_share(const std::vector<SolvedChart>& charts, const std::vector<double>& own_area) {
   double empty = 0, total = 0;
-  std::vector<int> boxes;
   for (size_t i = 0; i < charts.size(); ++i) {
-    const SolvedChart& c = charts[i];
     total += own_area[i];
-    if (c.free_boundary || c.mesh.closed_holes > 0) empty += own_area[i] * (1 - c.fill());
-    else if (c.fill() >= kLeastGuestFill) boxes.push_back(int(i));
+    if (leaves_texels_empty(charts[i])) empty += own_area[i] * (1 - charts[i].fill());
   }
-  if (!(empty >= kLeastEmptyShare * total)) return {};
-  std::stable_sort(boxes.begin(), boxes.end(), [&](int a, int b) { return own_area[size_t(a)] < own_area[size_t(b)]; });
+  return total > 0 ? empty / total : 0;
+}
+
+std::vector<int> charts_to_put_in_empty_texels(const std::vector<SolvedChart>& charts, const std::vector<double>& own_area,
+                                               const GuestChoice& choice) {
+  const double empty = expected_empty_share(charts, own_area) * std::accumulate(own_area.begin(), own_area.end(), 0.0);
+  std::vector<int> candidates;
+  for (size_t i = 0; i < charts.size(); ++i)
+    if (choice.any_shape || (!leaves_texels_empty(charts[i]) && charts[i].fill() >= kLeastGuestFill)) candidates.push_back(int(i));
+  std::stable_sort(candidates.begin(), candidates.end(), [&](int a, int b) { return own_area[size_t(a)] < own_area[size_t(b)]; });
   std::vector<int> guests;
-  double taken = 0;
-  for (const int i : boxes) {
-    taken += own_area[size_t(i)];
-    if (taken > kGuestsShareOfEmpty * empty) break;
+  double taken = 0;  // texels of the guests' own triangles
+  for (const int i : candidates) {
+    taken += own_area[size_t(i)] * std::min(1.0, charts[size_t(i)].fill());
+    if (taken > choice.share_of_empty * empty) break;
     guests.push_back(i);
   }
   return guests;
@@ -175,31 +246,32 @@ std::vector<int> put_in_empty_texels(const std::vector<SolvedChart>& charts, con
       continue;
     }
     const Eigen::Vector2d size = chart.box.sizes() * std::sqrt(density * chart.kept.area_3d / own);  // in cells
+    Outline best;
     int best_x = 0, best_y = 0;
-    bool found = false, turned = false;
-    for (const bool turn : {false, true}) {
-      const int w = int(std::floor(turn ? size.y() : size.x())) + 1, h = int(std::floor(turn ? size.x() : size.y())) + 1;
+    bool found = false;
+    // A box looks the same half a turn round; an outline may fit into other room.
+    const int turnings = chart.fill() >= kLeastGuestFill ? 2 : 4;
+    for (int turns = 0; turns < turnings; ++turns) {
+      Outline outline = outline_of(chart, size, turns);
       int x = 0, y = 0;
-      if (!grid.first_fit(w, h, x, y)) continue;
-      if (!found || std::make_pair(y, x) < std::make_pair(best_y, best_x)) best_x = x, best_y = y, turned = turn, found = true;
+      if (!grid.first_fit(outline.rows, found ? best_y : side, x, y)) continue;
+      if (!found || std::make_pair(y, x) < std::make_pair(best_y, best_x))
+        best_x = x, best_y = y, best = std::move(outline), found = true;
     }
     if (!found) {
       unplaced.push_back(g);
       continue;
     }
-    const Eigen::Vector2d cells = turned ? Eigen::Vector2d(size.y(), size.x()) : size;
-    const int w = int(std::floor(cells.x())) + 1, h = int(std::floor(cells.y())) + 1;
-    grid.take(best_x - gutter, best_y - gutter, best_x + w + gutter, best_y + h + gutter);
-    grid.count_runs(best_y - gutter, best_y + h + gutter);
+    for (size_t r = 0; r < best.rows.size(); ++r)
+      for (const auto& run : best.rows[r])
+        grid.take(best_x + run.first - gutter, best_y + int(r) - gutter, best_x + run.second + gutter, best_y + int(r) + 1 + gutter);
+    grid.count_runs(best_y - gutter, best_y + int(best.rows.size()) + gutter);
     const Eigen::Vector2d origin(best_x, best_y);
     for (size_t j = 0; j < chart.faces.size(); ++j) {
       const int f = chart.faces[j];
       face_chart[size_t(f)] = g;
       for (int k = 0; k < 3; ++k) {
-        Eigen::Vector2d q = ((chart.map.uv.row(chart.mesh.F(Eigen::Index(j), k)).transpose() - chart.box.min()).array() /
-                             chart.box.sizes().array()).matrix();
-        if (turned) q = Eigen::Vector2d(1 - q.y(), q.x());  // a quarter turn counter-clockwise, as in the tiling
-        const Eigen::Vector2d in_cells = origin + q.cwiseProduct(cells);
+        const Eigen::Vector2d in_cells = origin + best.corners[3 * j + size_t(k)];
         corner_uv.block(f, 2 * k, 1, 2) = ((in_cells.array() - offset) / scale).matrix().transpose();
       }
     }
