@@ -237,16 +237,21 @@ ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, cons
   }
   if (!kept.empty() && result.coverage < 1 - kLeastEmptyShare) {
     const double tiled = texture_efficiency(result);
-    const std::vector<double> own_area = cell_areas(kept);
-    std::vector<int> last_guests;
+    std::vector<SolvedChart> flat_seen;
     for (const GuestChoice& choice : kGuestChoices) {
-      std::vector<int> guests = charts_to_put_in_empty_texels(kept, own_area, choice);
-      if (guests.empty() || guests == last_guests) continue;
-      last_guests = guests;
-      ChartsResult nested = atlas_of(kept, guests, unit_V, F, unit, int(V.rows()), options);
+      if (choice.flat_seen_along_normal && flat_seen.empty()) {
+        flat_seen = kept;
+        see_flat_charts_along_normal(flat_seen);
+      }
+      const std::vector<SolvedChart>& charts = choice.flat_seen_along_normal ? flat_seen : kept;
+      const std::vector<int> guests = charts_to_put_in_empty_texels(charts, cell_areas(charts), choice);
+      if (guests.empty()) continue;
+      ChartsResult nested = atlas_of(charts, guests, unit_V, F, unit, int(V.rows()), options);
       if (nested.error || !(texture_efficiency(nested) > texture_efficiency(result))) continue;
-      nested.notes.push_back("with small charts in empty texels the atlas has efficiency " + number_text(texture_efficiency(nested)) +
-                             " (coverage / L2^2) against " + number_text(tiled));
+      nested.notes.push_back(std::string("with small charts in empty texels") +
+                             (choice.flat_seen_along_normal ? " and flat charts as seen along their normal" : "") +
+                             " the atlas has efficiency " + number_text(texture_efficiency(nested)) + " (coverage / L2^2) against " +
+                             number_text(tiled));
       result = std::move(nested);
     }
   }

@@ -23,14 +23,17 @@ double expected_empty_share(const std::vector<SolvedChart>& charts, const std::v
 
 // Which charts leave the tiling for empty texels: the smallest first, while their own texels stay
 // under a share of the expected empty texels; only rectangles that fill their box, or charts of any
-// shape (free outlines fit into each other's concave sides and holes).
+// shape (free outlines fit into each other's concave sides and holes). And whether flat charts
+// are seen along their normal first (see_flat_charts_along_normal: less stretch, more empty texels).
 struct GuestChoice {
   bool any_shape = false;
   double share_of_empty = 0.5;
+  bool flat_seen_along_normal = false;
 };
-// Each is tried on the kept atlas; the best layout is kept. (Rectangles only suit most atlases;
-// any shape at 0.5 couplingdown, at 0.8 the anchor and the spool.)
-constexpr GuestChoice kGuestChoices[] = {{false, 0.5}, {true, 0.5}, {true, 0.8}};
+// Each is tried on the kept atlas; the best layout is kept. Rectangles only suit most atlases
+// (the joint); any shape at 0.8 the anchor and rotor_small; flat faces seen along their normal,
+// with any shape at 0.5, couplingdown, the rotor and the spool.
+constexpr GuestChoice kGuestChoices[] = {{false, 0.5, false}, {true, 0.8, false}, {true, 0.5, true}};
 
 std::vector<int> charts_to_put_in_empty_texels(const std::vector<SolvedChart>& charts, const std::vector<double>& own_area,
                                                const GuestChoice& choice);

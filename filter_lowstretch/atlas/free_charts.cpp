@@ -59,4 +59,21 @@ void free_the_charts_that_stretch(std::vector<SolvedChart>& charts, const ChartO
   });
 }
 
+void see_flat_charts_along_normal(std::vector<SolvedChart>& charts) {
+  for_each_index(int(charts.size()), [&](int k, int) {
+    SolvedChart& chart = charts[size_t(k)];
+    if (chart.free_boundary) return;
+    SolvedChart seen;
+    seen.mesh = chart.mesh;
+    seen.faces = chart.faces;
+    seen.kept_whole = chart.kept_whole;
+    map_as_seen_along_normal(seen);
+    if (seen.kept.flipped + seen.kept.degenerate > 0 || !(seen.kept.l2_stretch <= kFlatBelow) ||
+        !(seen.kept.l2_stretch < chart.kept.l2_stretch))
+      return;
+    if (uv_boundary_crosses_itself(seen.mesh.F.topRows(Eigen::Index(seen.faces.size())), seen.map.uv)) return;
+    chart = std::move(seen);
+  });
+}
+
 }  // namespace lowstretch

@@ -21,4 +21,12 @@ constexpr double kFreeMustPay = 4;
 // 37-face strip of a scan: L2 46.7 on its rectangle, 1.0 free).
 void free_the_charts_that_stretch(std::vector<SolvedChart>& charts, const ChartOptions& options, double must_pay = kFreeMustPay);
 
+// A chart seen along its normal at this L2 stretch or less is flat (a face of a CAD part).
+constexpr double kFlatBelow = 1.02;
+
+// Every flat chart on a rectangle that its own shape, seen along its normal, stretches less (a
+// rectangle stretches a round or bent face) is mapped so, if that does not fold over itself. Its
+// box is no longer filled: worth it where other charts go into the texels it leaves empty.
+void see_flat_charts_along_normal(std::vector<SolvedChart>& charts);
+
 }  // namespace lowstretch
