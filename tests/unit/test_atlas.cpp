@@ -470,6 +470,20 @@ ChartPlaces places_of(const testmesh::Mesh& m, const ChartsResult& r) {
   return places;
 }
 
+// The charts whose UV box lies inside the box of face 0's chart (a plate's top, with a hole),
+// each checked to be at that chart's texel density.
+std::vector<size_t> charts_inside_the_box_of_face_0(const testmesh::Mesh& m, const ChartsResult& r) {
+  const ChartPlaces places = places_of(m, r);
+  const size_t top = size_t(r.face_chart[0]);
+  std::vector<size_t> inside;
+  for (size_t c = 0; c < r.charts.size(); ++c)
+    if (c != top && places.box[top].contains(places.box[c])) {
+      inside.push_back(c);
+      EXPECT_NEAR(places.density[c] / places.density[top], 1.0, 0.05) << "chart " << c;
+    }
+  return inside;
+}
+
 // A plate's top keeps its hole at bound 1.5 (HoleThatWastesTheBoxIsCutOpen); the small squares
 // beside it go into the texels that hole leaves empty rather than into cells of their own: inside
 // the top's box, at the texel density of the others, a gutter away from every other chart's
@@ -480,15 +494,7 @@ TEST(Atlas, SmallChartsGoIntoTexelsTheTilingLeavesEmpty) {
   const ChartsResult r = atlas_of(m, 1.5);
   expect_valid_layout(m.F, r);
   EXPECT_TRUE(has_note_containing(r, "put into texels the tiling left empty"));
-  const ChartPlaces places = places_of(m, r);
-  const size_t top = size_t(r.face_chart[0]);
-  int inside_top = 0;
-  for (size_t c = 0; c < r.charts.size(); ++c)
-    if (c != top && places.box[top].contains(places.box[c])) {
-      ++inside_top;
-      EXPECT_NEAR(places.density[c] / places.density[top], 1.0, 0.05) << "chart " << c;
-    }
-  EXPECT_GT(inside_top, 0);
+  EXPECT_FALSE(charts_inside_the_box_of_face_0(m, r).empty());
   EXPECT_GE(least_distance_between_charts(m.F, r), ChartOptions().gutter / ChartOptions().texture_size * (1 - 1e-6));
 }
 
@@ -502,14 +508,8 @@ TEST(Atlas, ChartsOfAnyShapeGoIntoEmptyTexelsByTheirOutline) {
   const ChartsResult r = atlas_of(m, 1.5);
   expect_valid_layout(m.F, r);
   EXPECT_TRUE(has_note_containing(r, "put into texels the tiling left empty"));
-  const ChartPlaces places = places_of(m, r);
-  const size_t top = size_t(r.face_chart[0]);
   int holed_inside_top = 0;
-  for (size_t c = 0; c < r.charts.size(); ++c)
-    if (c != top && places.box[top].contains(places.box[c])) {
-      holed_inside_top += r.charts[c].closed_holes > 0;
-      EXPECT_NEAR(places.density[c] / places.density[top], 1.0, 0.05) << "chart " << c;
-    }
+  for (const size_t c : charts_inside_the_box_of_face_0(m, r)) holed_inside_top += r.charts[c].closed_holes > 0;
   EXPECT_GT(holed_inside_top, 0);
   EXPECT_GE(least_distance_between_charts(m.F, r), ChartOptions().gutter / ChartOptions().texture_size * (1 - 1e-6));
 }
