@@ -170,26 +170,27 @@ Outline outline_of(const SolvedChart& chart, const Eigen::Vector2d& size, int tu
   return outline;
 }
 
-// A chart whose cell its faces do not fill: a free outline, or closed holes.
-bool leaves_texels_empty(const SolvedChart& chart) { return chart.free_boundary || chart.mesh.closed_holes > 0; }
+// The cell area that charts not filling their box are expected to leave empty.
+double expected_empty_area(const std::vector<SolvedChart>& charts, const std::vector<double>& own_area) {
+  double empty = 0;
+  for (size_t i = 0; i < charts.size(); ++i)
+    if (charts[i].leaves_box_empty()) empty += own_area[i] * (1 - charts[i].fill());
+  return empty;
+}
 
 }  // namespace
 
 double expected_empty_share(const std::vector<SolvedChart>& charts, const std::vector<double>& own_area) {
-  double empty = 0, total = 0;
-  for (size_t i = 0; i < charts.size(); ++i) {
-    total += own_area[i];
-    if (leaves_texels_empty(charts[i])) empty += own_area[i] * (1 - charts[i].fill());
-  }
-  return total > 0 ? empty / total : 0;
+  const double total = std::accumulate(own_area.begin(), own_area.end(), 0.0);
+  return total > 0 ? expected_empty_area(charts, own_area) / total : 0;
 }
 
 std::vector<int> charts_to_put_in_empty_texels(const std::vector<SolvedChart>& charts, const std::vector<double>& own_area,
                                                const GuestChoice& choice) {
-  const double empty = expected_empty_share(charts, own_area) * std::accumulate(own_area.begin(), own_area.end(), 0.0);
+  const double empty = expected_empty_area(charts, own_area);
   std::vector<int> candidates;
   for (size_t i = 0; i < charts.size(); ++i)
-    if (choice.any_shape || (!leaves_texels_empty(charts[i]) && charts[i].fill() >= kLeastGuestFill)) candidates.push_back(int(i));
+    if (choice.any_shape || (!charts[i].leaves_box_empty() && charts[i].fill() >= kLeastGuestFill)) candidates.push_back(int(i));
   std::stable_sort(candidates.begin(), candidates.end(), [&](int a, int b) { return own_area[size_t(a)] < own_area[size_t(b)]; });
   std::vector<int> guests;
   double taken = 0;  // texels of the guests' own triangles

@@ -26,6 +26,20 @@ void map_as_seen_along_normal(SolvedChart& chart) {
   chart.fit_box();
 }
 
+// A chart of the same faces, with no map yet.
+SolvedChart unmapped_copy(const SolvedChart& chart) {
+  SolvedChart copy;
+  copy.mesh = chart.mesh;
+  copy.faces = chart.faces;
+  copy.kept_whole = chart.kept_whole;
+  return copy;
+}
+
+// Whether a free map's outline crosses itself (so the map overlaps itself).
+bool crosses_itself(const SolvedChart& free) {
+  return uv_boundary_crosses_itself(free.mesh.F.topRows(Eigen::Index(free.faces.size())), free.map.uv);
+}
+
 }  // namespace
 
 void free_the_charts_that_stretch(std::vector<SolvedChart>& charts, const ChartOptions& options, double must_pay) {
@@ -43,16 +57,13 @@ void free_the_charts_that_stretch(std::vector<SolvedChart>& charts, const ChartO
     SolvedChart& chart = charts[size_t(above[size_t(k)])];
     double best = must_pay * uses(chart);
     for (const bool seen_along_normal : {false, true}) {
-      SolvedChart free;
-      free.mesh = chart.mesh;
-      free.faces = chart.faces;
-      free.kept_whole = chart.kept_whole;
+      SolvedChart free = unmapped_copy(chart);
       if (seen_along_normal) map_as_seen_along_normal(free);
       else solve_onto(free, for_share(options.disk, chart.faces.size(), above_faces), 0, true);
       if (free.map.error || free.kept.flipped + free.kept.degenerate > 0) continue;
       const double used = uses(free);
       if (!(used > best)) continue;
-      if (uv_boundary_crosses_itself(free.mesh.F.topRows(Eigen::Index(free.faces.size())), free.map.uv)) continue;
+      if (crosses_itself(free)) continue;
       best = used;
       chart = std::move(free);
     }
@@ -63,15 +74,12 @@ void see_flat_charts_along_normal(std::vector<SolvedChart>& charts) {
   for_each_index(int(charts.size()), [&](int k, int) {
     SolvedChart& chart = charts[size_t(k)];
     if (chart.free_boundary) return;
-    SolvedChart seen;
-    seen.mesh = chart.mesh;
-    seen.faces = chart.faces;
-    seen.kept_whole = chart.kept_whole;
+    SolvedChart seen = unmapped_copy(chart);
     map_as_seen_along_normal(seen);
     if (seen.kept.flipped + seen.kept.degenerate > 0 || !(seen.kept.l2_stretch <= kFlatBelow) ||
         !(seen.kept.l2_stretch < chart.kept.l2_stretch))
       return;
-    if (uv_boundary_crosses_itself(seen.mesh.F.topRows(Eigen::Index(seen.faces.size())), seen.map.uv)) return;
+    if (crosses_itself(seen)) return;
     chart = std::move(seen);
   });
 }

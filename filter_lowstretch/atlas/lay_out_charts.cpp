@@ -34,7 +34,7 @@ std::vector<double> cell_areas(const std::vector<SolvedChart>& charts) {
   // that holds its box at the texel density of the others.
   std::vector<double> own_area;
   for (const SolvedChart& c : charts)
-    own_area.push_back(c.free_boundary || c.mesh.closed_holes > 0 ? c.kept.area_3d / std::max(c.fill(), 0.05) : c.kept.area_3d);
+    own_area.push_back(c.leaves_box_empty() ? c.kept.area_3d / std::max(c.fill(), 0.05) : c.kept.area_3d);
   return own_area;
 }
 

@@ -61,6 +61,8 @@ struct SolvedChart {
   double uv_area() const;
   // The share of its box that its real faces cover (about 1 on a rectangle).
   double fill() const;
+  // Whether its faces leave part of its box empty: a free outline, or closed holes.
+  bool leaves_box_empty() const { return free_boundary || mesh.closed_holes > 0; }
 };
 
 // What a chart costs in texture at one texel density: its area times L2^2, over the share of its
