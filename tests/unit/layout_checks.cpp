@@ -14,6 +14,19 @@ double signed_area(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eig
   return 0.5 * ((b - a).x() * (c - a).y() - (c - a).x() * (b - a).y());
 }
 
+std::vector<double> texel_densities(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartsResult& r) {
+  std::vector<double> uv(r.charts.size(), 0.0), area(r.charts.size(), 0.0);
+  for (Eigen::Index f = 0; f < F.rows(); ++f) {
+    const size_t c = size_t(r.face_chart[size_t(f)]);
+    const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), d = V.row(F(f, 2));
+    area[c] += 0.5 * (b - a).cross(d - a).norm();
+    uv[c] += signed_area(corner(r, f, 0), corner(r, f, 1), corner(r, f, 2));
+  }
+  std::vector<double> density;
+  for (size_t c = 0; c < r.charts.size(); ++c) density.push_back(uv[c] / area[c]);
+  return density;
+}
+
 int overlapping_pixels(const ChartsResult& r) {
   const int n = 1024;
   std::vector<int> owner(size_t(n) * n, -1);

@@ -2,6 +2,7 @@
 // chart and atlas tests.
 #pragma once
 #include <Eigen/Core>
+#include <vector>
 
 #include "atlas/charts.h"
 
@@ -9,6 +10,9 @@ namespace lowstretch {
 
 Eigen::Vector2d corner(const ChartsResult& r, Eigen::Index f, int k);
 double signed_area(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c);
+
+// Each chart's texel density: its UV area over its 3D area.
+std::vector<double> texel_densities(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartsResult& r);
 
 // Pixel centres of a 1024 x 1024 raster strictly inside two triangles (of one chart or of two):
 // any overlap of the layout that covers a pixel centre.

@@ -458,15 +458,9 @@ struct ChartPlaces {
 ChartPlaces places_of(const testmesh::Mesh& m, const ChartsResult& r) {
   ChartPlaces places;
   places.box.resize(r.charts.size());
-  std::vector<double> uv(r.charts.size(), 0.0), area(r.charts.size(), 0.0);
-  for (Eigen::Index f = 0; f < m.F.rows(); ++f) {
-    const size_t c = size_t(r.face_chart[size_t(f)]);
-    for (int k = 0; k < 3; ++k) places.box[c].extend(corner(r, f, k));
-    const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), d = m.V.row(m.F(f, 2));
-    area[c] += 0.5 * (b - a).cross(d - a).norm();
-    uv[c] += signed_area(corner(r, f, 0), corner(r, f, 1), corner(r, f, 2));
-  }
-  for (size_t c = 0; c < r.charts.size(); ++c) places.density.push_back(uv[c] / area[c]);
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) places.box[size_t(r.face_chart[size_t(f)])].extend(corner(r, f, k));
+  places.density = texel_densities(m.V, m.F, r);
   return places;
 }
 
