@@ -123,6 +123,13 @@ struct FacesCut {
 // instead of the second cut, fandisk fell 0.807 -> 0.784; at 20 or 45 degrees couplingdown reached
 // 0.600 or 0.560).
 const FacesCut kFacesCuts[] = {{kSharpEdgeDegrees, 1}, {kSharpEdgeDegrees, 0.5}, {30, 0.5}};
+// Whether atlas a uses the texture better than b, or as well with fewer flipped and zero-area triangles.
+bool more_efficient(const ChartsResult& a, const ChartsResult& b) {
+  return texture_efficiency(a) > texture_efficiency(b) ||
+         (texture_efficiency(a) == texture_efficiency(b) &&
+          a.layout.flipped + a.layout.degenerate < b.layout.flipped + b.layout.degenerate);
+}
+
 // A cut along gentler edges is tried only while the best atlas has a lower efficiency: it took a
 // quarter more time (rotor 0.18 -> 0.24 s, fandisk 1.05 -> 1.33 s, medians of 5) and gained
 // nothing on the parts above it (fandisk 0.807, pinion 0.894, joint 0.814, dragknob 0.833).
@@ -145,8 +152,8 @@ bool has_faces_of_its_own(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
   return total - std::accumulate(largest.begin(), largest.end(), 0.0) >= kFacesShare * total;
 }
 
-// Any mesh as charts: its components, cut until they meet the bound, laid out; or one chart per
-// component if that uses the texture better.
+// Any mesh as charts: its components cut until they meet the bound, or one chart per component
+// if that uses the texture better; a model made of faces cut along its sharp edges instead.
 ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options) {
   // parameterize checked indices, coordinates, edges and orientation of the whole mesh before it
   // found the topology wrong; vertex fans are checked per component and between components.
@@ -162,7 +169,6 @@ ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, cons
   std::vector<std::string> notes;
   if (options.disk.boundary != BoundaryShape::Square)
     notes.push_back("an atlas maps every chart onto a rectangle: the boundary option applies to disks only");
-  std::vector<SolvedChart> leaves, uncut;
   const size_t part_count = components.size(), common_notes = notes.size();
   // The atlases tried after the first start their progress again: it is reported as the most reached.
   double reached = 0;
@@ -172,10 +178,6 @@ ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, cons
       reached = std::max(reached, fraction);
       return options.disk.progress(reached, stage);
     };
-  if (Error e = split_until_bounded(unit_V, F, std::move(components), reporting, leaves, uncut, notes)) return failed_result(e);
-  free_the_charts_that_stretch(leaves, options);
-  const size_t cut_into = leaves.size();
-  const bool bound_cut = !uncut.empty();
   // Each atlas tried is tiled; the charts of the one kept so far are kept too when its tiling is
   // expected to leave texels empty: small charts are put into them on the kept atlas only. (Boxes
   // put into every atlas tried gave the anchor 0.691 instead of 0.681 and the spool 0.674 instead
@@ -186,28 +188,18 @@ ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, cons
     tried = leaves_room ? charts : std::vector<SolvedChart>();
     return atlas_of(std::move(charts), {}, unit_V, F, unit, int(V.rows()), options);
   };
-  ChartsResult result = tile(std::move(leaves));
-  kept = std::move(tried);
-  if (!uncut.empty() && !(texture_efficiency(result) > kClearlyBetter * best_possible_efficiency(uncut))) {
-    ChartsResult whole = tile(std::move(uncut));
-    if (texture_efficiency(whole) > texture_efficiency(result) || (texture_efficiency(whole) == texture_efficiency(result) &&
-                                                                   whole.layout.flipped + whole.layout.degenerate <
-                                                                       result.layout.flipped + result.layout.degenerate)) {
-      notes.push_back("one chart per part: cut into " + std::to_string(cut_into) + " charts, the atlas had efficiency " +
-                      number_text(texture_efficiency(result)) + " (coverage / L2^2) against " + number_text(texture_efficiency(whole)));
-      result = std::move(whole);
-      kept = std::move(tried);
-    }
-  }
-  // A model made of faces (a CAD part) whose parts the bound cuts, or would cut but for the undo,
-  // is tried cut along its sharp edges first.
-  const bool above = bound_cut || std::any_of(result.charts.begin(), result.charts.end(), [](const Chart& c) { return c.above_bound; });
-  std::vector<std::vector<int>> patches;
-  if (above) patches = patches_between_sharp_edges(unit_V, F, kSharpEdgeDegrees);
-  if (patches.size() > part_count && has_faces_of_its_own(unit_V, F, component, patches)) {
-    const double best_before = texture_efficiency(result);
+  ChartsResult result;
+  bool made = false;  // whether `result` holds an atlas yet
+  // A model made of faces (a CAD part) is cut along its sharp edges. Where its parts, mapped
+  // whole, are above the bound, it is not also cut by stretch alone: that atlas lost to the sharp
+  // edges' on CGAL's eight CAD parts by 0.09 to 0.78 of efficiency (fandisk 0.807 against 0.721,
+  // joint 0.815 against 0.033) and took 20-45% of their time (fandisk 0.69 -> 0.45 s without it,
+  // medians of 5; the same atlas on all 166 meshes of CGAL's demo data and the shared ones).
+  const std::vector<std::vector<int>> patches = patches_between_sharp_edges(unit_V, F, kSharpEdgeDegrees);
+  const bool made_of_faces = patches.size() > part_count && has_faces_of_its_own(unit_V, F, component, patches);
+  const auto cut_along_sharp_edges = [&]() -> Error {
     for (const FacesCut& cut : kFacesCuts) {
-      if (cut.degrees != kSharpEdgeDegrees && !(texture_efficiency(result) < kGentlerCutBelow)) continue;
+      if (cut.degrees != kSharpEdgeDegrees && made && !(texture_efficiency(result) < kGentlerCutBelow)) continue;
       ChartOptions by_faces_options = reporting;
       by_faces_options.max_stretch = 1 + cut.excess_kept * (options.max_stretch - 1);
       std::vector<SolvedChart> by_faces_leaves, unused;
@@ -216,25 +208,63 @@ ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, cons
                                           cut.degrees == kSharpEdgeDegrees ? patches
                                                                            : patches_between_sharp_edges(unit_V, F, cut.degrees),
                                           by_faces_options, by_faces_leaves, unused, by_faces_notes);
-      if (e.code == ErrorCode::Cancelled) return failed_result(e);
+      if (e.code == ErrorCode::Cancelled) return e;
       if (e) continue;
       for (const double must_pay : kFreeFacesMustPay) {
         std::vector<SolvedChart> leaves_of_try = by_faces_leaves;
         free_the_charts_that_stretch(leaves_of_try, options, must_pay);
         ChartsResult by_faces = tile(std::move(leaves_of_try));
-        if (!(texture_efficiency(by_faces) > texture_efficiency(result))) continue;
+        if (by_faces.error || (made && !(texture_efficiency(by_faces) > texture_efficiency(result)))) continue;
+        const std::string against = made ? " against " + number_text(texture_efficiency(result)) : "";
         result = std::move(by_faces);
+        made = true;
         kept = std::move(tried);
-        notes.resize(common_notes);  // the first cut's notes go with its atlas
+        notes.resize(common_notes);  // the cut's notes go with its atlas
         notes.insert(notes.end(), by_faces_notes.begin(), by_faces_notes.end());
-        notes.push_back("charts cut along the sharp edges first (a model made of faces; normals more than " +
+        notes.push_back("charts cut along the sharp edges (a model made of faces; normals more than " +
                         number_text(cut.degrees) + " degrees apart)" +
                         std::string(cut.excess_kept < 1 ? ", to L2 stretch " + number_text(by_faces_options.max_stretch) : "") +
-                        ": efficiency " + number_text(texture_efficiency(result)) + " (coverage / L2^2) against " +
-                        number_text(best_before));
+                        ": efficiency " + number_text(texture_efficiency(result)) + " (coverage / L2^2)" + against);
       }
     }
+    return {};
+  };
+  const bool only_sharp_edges = made_of_faces && !parts_meet_the_bound(unit_V, F, components, options);
+  if (only_sharp_edges)
+    if (Error e = cut_along_sharp_edges()) return failed_result(e);
+  // Cut by stretch alone: the atlas of a mesh not made of faces, or of one whose cuts along its
+  // sharp edges failed or left flipped or zero-area triangles (the better of the two is kept).
+  if (!made || !(texture_efficiency(result) > 0)) {
+    std::vector<std::string> by_stretch_notes(notes.begin(), notes.begin() + long(common_notes));
+    std::vector<SolvedChart> leaves, uncut;
+    if (Error e = split_until_bounded(unit_V, F, std::move(components), reporting, leaves, uncut, by_stretch_notes))
+      return failed_result(e);
+    free_the_charts_that_stretch(leaves, options);
+    const size_t cut_into = leaves.size();
+    ChartsResult by_stretch = tile(std::move(leaves));
+    std::vector<SolvedChart> by_stretch_kept = std::move(tried);
+    if (!uncut.empty() && !(texture_efficiency(by_stretch) > kClearlyBetter * best_possible_efficiency(uncut))) {
+      ChartsResult whole = tile(std::move(uncut));
+      if (more_efficient(whole, by_stretch)) {
+        by_stretch_notes.push_back("one chart per part: cut into " + std::to_string(cut_into) + " charts, the atlas had efficiency " +
+                                   number_text(texture_efficiency(by_stretch)) + " (coverage / L2^2) against " +
+                                   number_text(texture_efficiency(whole)));
+        by_stretch = std::move(whole);
+        by_stretch_kept = std::move(tried);
+      }
+    }
+    if (!made || more_efficient(by_stretch, result)) {
+      result = std::move(by_stretch);
+      kept = std::move(by_stretch_kept);
+      notes = std::move(by_stretch_notes);
+      made = true;
+    }
   }
+  // Parts that met the bound while deciding, and so were not cut, may stretch more in their cells:
+  // a model made of faces is then cut along its sharp edges too, the better atlas kept.
+  const bool above = std::any_of(result.charts.begin(), result.charts.end(), [](const Chart& c) { return c.above_bound; });
+  if (made_of_faces && !only_sharp_edges && above)
+    if (Error e = cut_along_sharp_edges()) return failed_result(e);
   if (!kept.empty() && result.coverage < 1 - kLeastEmptyShare) {
     const double tiled = texture_efficiency(result);
     std::vector<SolvedChart> flat_seen;

@@ -174,6 +174,16 @@ void map_to_decide(SolvedChart& chart, const Options& deciding, double max_stret
   chart.deciding_map = true;
 }
 
+// Deciding where to cut needs the map's stretch, not its last digits: U0 and U1 only (the atlas
+// came out the same on the shared meshes, 30-50% sooner), solved to kDecidingTolerance. The
+// layout maps each chart fully.
+Options deciding_options(Options deciding) {
+  deciding.max_passes = std::min(deciding.max_passes, 1);
+  deciding.solver.tolerance = std::max(deciding.solver.tolerance, kDecidingTolerance);
+  deciding.solver.residual_accepted = std::max(deciding.solver.residual_accepted, 100 * deciding.solver.tolerance);
+  return deciding;
+}
+
 // A chart of fewer than 2 x kSmallestChart faces stays whole unless it stretches more than
 // kSmallCutAbove times the bound and has kSmallestCutChart faces or more (charts.h).
 bool too_small_to_cut(const SolvedChart& chart, double max_stretch) {
@@ -183,6 +193,25 @@ bool too_small_to_cut(const SolvedChart& chart, double max_stretch) {
 }
 
 }  // namespace
+
+bool parts_meet_the_bound(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const std::vector<std::vector<int>>& parts,
+                          const ChartOptions& options) {
+  std::vector<SolvedChart> charts(parts.size());
+  std::vector<int> local_of(size_t(unit_V.rows()), -1);
+  size_t faces = 0;
+  for (size_t i = 0; i < parts.size(); ++i) {
+    charts[i].faces = parts[i];
+    if (make_chart_mesh(unit_V, F, parts[i], local_of, charts[i].mesh)) return false;
+    faces += parts[i].size();
+  }
+  const Options deciding = deciding_options(options.disk);
+  for_each_index(int(charts.size()), [&](int i, int) {
+    SolvedChart& chart = charts[size_t(i)];
+    map_to_decide(chart, for_share(deciding, chart.faces.size(), faces), options.max_stretch);
+  }, largest_first(charts, 0, charts.size()));
+  return std::none_of(charts.begin(), charts.end(),
+                      [&](const SolvedChart& c) { return c.map.error || bound_cuts(c, options.max_stretch); });
+}
 
 Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, std::vector<std::vector<int>> components,
                           const ChartOptions& options, std::vector<SolvedChart>& leaves, std::vector<SolvedChart>& uncut,
@@ -199,13 +228,7 @@ Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
   tree.parts.resize(tree.nodes.size());
   int charts = int(tree.nodes.size());
   bool limit_reached = false;
-  // Deciding where to cut needs the map's stretch, not its last digits: U0 and U1 only (the atlas
-  // came out the same on the shared meshes, 30-50% sooner), solved to kDecidingTolerance. The
-  // layout maps each chart fully.
-  Options deciding = options.disk;
-  deciding.max_passes = std::min(deciding.max_passes, 1);
-  deciding.solver.tolerance = std::max(deciding.solver.tolerance, kDecidingTolerance);
-  deciding.solver.residual_accepted = std::max(deciding.solver.residual_accepted, 100 * deciding.solver.tolerance);
+  const Options deciding = deciding_options(options.disk);
   for (size_t first = 0, end = tree.nodes.size(); first < end; first = end, end = tree.nodes.size()) {
     const size_t round_faces = faces_in(tree.nodes, first, end);
     for_each_index(int(end - first), [&](int i, int) {

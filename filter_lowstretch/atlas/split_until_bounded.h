@@ -18,4 +18,9 @@ Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
                           const ChartOptions& options, std::vector<SolvedChart>& leaves, std::vector<SolvedChart>& uncut,
                           std::vector<std::string>& notes);
 
+// Whether every part, mapped whole as the cuts are decided, meets the bound (none would be cut).
+// False too if a part cannot be mapped: split_until_bounded says why.
+bool parts_meet_the_bound(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const std::vector<std::vector<int>>& parts,
+                          const ChartOptions& options);
+
 }  // namespace lowstretch

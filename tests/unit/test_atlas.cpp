@@ -346,8 +346,8 @@ TEST(Atlas, HoleThatWastesTheBoxIsCutOpen) {
   EXPECT_EQ(kept_holes, 2);  // the top's and the bottom's
 }
 
-// A bar of a cube is tried cut three ways (by stretch, along its sides, along them to a tighter
-// bound): the progress that MeshLab's bar shows goes on from where it was rather than starting again.
+// A bar of a cube is tried cut two ways (along its sides, and along them to a tighter bound): the
+// progress that MeshLab's bar shows goes on from where it was rather than starting again.
 TEST(Atlas, ProgressNeverGoesBack) {
   testmesh::Mesh m = testmesh::cube(8);
   m.V.col(0) *= 3;  // a bar: the first atlas cuts it in more rounds than it has sides
@@ -363,7 +363,7 @@ TEST(Atlas, ProgressNeverGoesBack) {
   };
   const ChartsResult r = parameterize_charts(m.V, m.F, options);
   ASSERT_FALSE(r.error) << message(r.error);
-  EXPECT_GT(reports, 10);  // each atlas reports its rounds of cuts (without the clamp, 2 steps back)
+  EXPECT_GE(reports, 8);  // each atlas reports its rounds of cuts (without the clamp, a step back)
   EXPECT_EQ(backwards, 0);
 }
 
