@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 namespace lowstretch {
 
@@ -36,20 +38,26 @@ Eigen::MatrixXd circle_boundary(const DiskMesh& disk) {
 
 namespace {
 
-// Outward bulge at parameter t of a side whose kinks are at `kink_t` (each in (0,1)): a sum of
-// tents, each zero at the corners and bending once at its kink, so concave, scaled so that its
-// largest value is kKinkBulge. Zero without kinks.
-double bulge(double t, const std::vector<double>& kink_t) {
-  if (kink_t.empty()) return 0.0;
-  const auto tents = [&](double x) {
+// Outward bulge along a side whose kinks are at `kink_t` (each in (0,1)): a sum of tents, each zero
+// at the corners and bending once at its kink, so concave, scaled so that its largest value is
+// kKinkBulge. Zero without kinks. Its peak is found once per side: found again for every vertex,
+// a side with thousands of kinks (CGAL's cheese, one chart) took 90% of a 50 s atlas.
+class SideBulge {
+ public:
+  explicit SideBulge(std::vector<double> kink_t) : kink_t_(std::move(kink_t)) {
+    for (double k : kink_t_) highest_ = std::max(highest_, tents(k));  // a concave polyline peaks at one of its kinks
+  }
+  double at(double t) const { return kink_t_.empty() ? 0.0 : kKinkBulge * tents(t) / highest_; }
+
+ private:
+  double tents(double x) const {
     double sum = 0;
-    for (double k : kink_t) sum += std::min(x / k, (1 - x) / (1 - k));
+    for (double k : kink_t_) sum += std::min(x / k, (1 - x) / (1 - k));
     return sum;
-  };
-  double highest = 0;  // a concave polyline peaks at one of its kinks
-  for (double k : kink_t) highest = std::max(highest, tents(k));
-  return kKinkBulge * tents(t) / highest;
-}
+  }
+  std::vector<double> kink_t_;
+  double highest_ = 0;
+};
 
 }  // namespace
 
@@ -77,8 +85,9 @@ Eigen::MatrixXd square_boundary(const DiskMesh& disk, const std::array<int, 4>& 
       const int unrolled = k < from ? k + n : k;
       if (unrolled > from && unrolled < to) kink_t.push_back(t_of(unrolled));
     }
+    const SideBulge bulge(std::move(kink_t));
     for (int i = from; i < to; ++i) {
-      const double t = t_of(i), b = side_length * bulge(t, kink_t);
+      const double t = t_of(i), b = side_length * bulge.at(t);
       const double* a = corner_uv[side];
       const double* c = corner_uv[(side + 1) % 4];
       uv(i % n, 0) = a[0] + t * (c[0] - a[0]) + b * outward[side][0];
