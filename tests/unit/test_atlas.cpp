@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "atlas/charts.h"
+#include "atlas/split_until_bounded.h"
 #include "generated_meshes.h"
 #include "layout_checks.h"
 
@@ -285,6 +286,39 @@ TEST(Atlas, SmallChartFarAboveTheBoundIsCut) {
     if (r.charts[c].faces >= kSmallestCutChart)
       EXPECT_LE(r.charts[c].l2_stretch, kSmallCutAbove * ChartOptions().max_stretch) << "chart " << c;
   EXPECT_LT(r.layout.l2_stretch, 1.6);
+}
+
+// Whether a model made of faces is cut along its sharp edges only is decided by its parts mapped
+// whole: a flat grid meets the bound on its rectangle; a cube, one part cut open along a seam,
+// stretches far above 1.2 but meets a loose bound; a "part" of two grids that touch at one corner
+// cannot be mapped as one chart, so it does not meet any bound (split_until_bounded says why).
+TEST(Atlas, PartsMeetTheBoundWhenEachMapsWithinIt) {
+  const auto all_faces = [](const testmesh::Mesh& m) {
+    std::vector<int> faces(size_t(m.F.rows()));
+    for (size_t f = 0; f < faces.size(); ++f) faces[f] = int(f);
+    return std::vector<std::vector<int>>{faces};
+  };
+  ChartOptions options;
+  const testmesh::Mesh grid = testmesh::grid(8), cube = testmesh::cube(8);
+  EXPECT_TRUE(parts_meet_the_bound(grid.V, grid.F, all_faces(grid), options));
+  EXPECT_FALSE(parts_meet_the_bound(cube.V, cube.F, all_faces(cube), options));
+  // grid(2) and a copy moved by (1, 1, 0) whose corner (0, 0), vertex 0, is the first's corner
+  // (1, 1), vertex 8: one vertex shared, no edge.
+  const testmesh::Mesh small = testmesh::grid(2);
+  const int n = int(small.V.rows());
+  testmesh::Mesh bowtie;
+  bowtie.V.resize(2 * n, 3);
+  bowtie.V << small.V, small.V.rowwise() + Eigen::RowVector3d(1, 1, 0);
+  bowtie.F.resize(2 * small.F.rows(), 3);
+  bowtie.F << small.F, (small.F.array() + n).matrix();
+  for (Eigen::Index f = small.F.rows(); f < bowtie.F.rows(); ++f)
+    for (int k = 0; k < 3; ++k)
+      if (bowtie.F(f, k) == n) bowtie.F(f, k) = n - 1;
+  ASSERT_EQ((bowtie.F.array() == n - 1).count(), 2 + 2) << "the shared corner is in two faces of each grid";
+  EXPECT_FALSE(parts_meet_the_bound(bowtie.V, bowtie.F, all_faces(bowtie), options));
+  options.max_stretch = 1e5;
+  EXPECT_TRUE(parts_meet_the_bound(cube.V, cube.F, all_faces(cube), options));
+  EXPECT_FALSE(parts_meet_the_bound(bowtie.V, bowtie.F, all_faces(bowtie), options));
 }
 
 // A model made of faces (a CAD part) is cut along its sharp edges: every side of a cube is one
