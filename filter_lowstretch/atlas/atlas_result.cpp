@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "cut_invalid_charts.h"
 #include "half_edges.h"
 #include "lay_out_charts.h"
 #include "stretch.h"
@@ -107,6 +108,14 @@ double corner_area(const Eigen::MatrixXd& corner_uv, Eigen::Index f) {
   return signed_uv_area(c(0), c(1), c(2));
 }
 
+// A face of zero 3D area (a scan's crack closed by a flat face) has no surface to texture, and
+// rounding can fold its UV triangle over its neighbours': its corners then go to one point.
+void collapse_folded_faces_of_zero_area(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, Eigen::MatrixXd& corner_uv) {
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    if (corner_area(corner_uv, f) < 0 && is_flat_face(unit_V, F, f))
+      for (int k = 1; k < 3; ++k) corner_uv.block(f, 2 * k, 1, 2) = corner_uv.block(f, 0, 1, 2);
+}
+
 // "chart 3", "charts 1, 4, 9", "charts 1, 4, 9 and 812 more".
 std::string charts_text(const std::vector<int>& charts) {
   std::string text = charts.size() == 1 ? "chart " : "charts ";
@@ -139,11 +148,12 @@ void store(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, int vertex_r
   std::vector<char> positive(size_t(F.rows()));
   for (Eigen::Index f = 0; f < F.rows(); ++f) positive[size_t(f)] = corner_area(result.corner_uv, f) > 0;
   result.corner_uv = result.corner_uv.cast<float>().cast<double>();
+  collapse_folded_faces_of_zero_area(unit_V, F, result.corner_uv);
   const double texel = 1.0 / (4096.0 * 4096.0);
   for (Eigen::Index f = 0; f < F.rows(); ++f) {
     const double area = corner_area(result.corner_uv, f);
     result.subtexel_triangles += std::abs(area) < texel;
-    result.float_collapsed += positive[size_t(f)] && !(area > 0);
+    result.float_collapsed += positive[size_t(f)] && !(area > 0) && !is_flat_face(unit_V, F, f);
   }
   if (result.float_collapsed > 0)
     result.notes.push_back(std::to_string(result.float_collapsed) +
@@ -152,8 +162,13 @@ void store(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, int vertex_r
   measure_layout(unit_V, F, vertex_rows, faces_of, result);
 }
 
-ChartsResult atlas_of(std::vector<SolvedChart> charts, const std::vector<int>& guests, const Eigen::MatrixXd& unit_V,
-                      const Eigen::MatrixXi& F, double unit, int vertex_rows, const ChartOptions& options) {
+namespace {
+
+// One layout of the charts, measured; `flat` faces (in no chart) sit on one point, as one more
+// chart.
+ChartsResult lay_out_and_store(std::vector<SolvedChart>& charts, const std::vector<int>& guests, const std::vector<int>& flat,
+                               const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, double unit, int vertex_rows,
+                               const ChartOptions& options) {
   ChartsResult result;
   if (Error e = lay_out(charts, options, F.rows(), guests, result)) return failed_result(e);
   std::vector<std::vector<int>> faces_of;
@@ -185,13 +200,22 @@ ChartsResult atlas_of(std::vector<SolvedChart> charts, const std::vector<int>& g
     passes.push_back(c.passes);
     kept.push_back(c.map.chosen_pass);
   }
+  if (!flat.empty()) {
+    Chart points;
+    points.faces = int(flat.size());
+    for (const int f : flat) {
+      result.face_chart[size_t(f)] = int(result.charts.size());
+      result.corner_uv.row(f).setZero();
+    }
+    result.charts.push_back(points);
+  }
   result.passes = layout_passes(passes, kept);
   result.seam_length += unit * length_between_charts(unit_V, F, result.face_chart);
   store(unit_V, F, vertex_rows, faces_of, options, result);
   for (size_t k = 0; k < chart_notes.size(); ++k) result.notes.push_back(charts_text(noted[k]) + ": " + chart_notes[k]);
   // Every chart above the bound is one note while they are few; past that, one note per reason.
   std::vector<int> above;
-  for (size_t c = 0; c < result.charts.size(); ++c) {
+  for (size_t c = 0; c < faces_of.size(); ++c) {
     Chart& chart = result.charts[c];
     chart.above_bound = !(chart.l2_stretch <= options.max_stretch);
     if (chart.above_bound) above.push_back(int(c));
@@ -220,6 +244,33 @@ ChartsResult atlas_of(std::vector<SolvedChart> charts, const std::vector<int>& g
                              reasons[k]);
   }
   return result;
+}
+
+// Rounds of cutting the charts with invalid faces and laying out again; the last cuts them into
+// single faces.
+const int kMostRepairRounds = 3;
+
+}  // namespace
+
+ChartsResult atlas_of(std::vector<SolvedChart> charts, std::vector<int> guests, const Eigen::MatrixXd& unit_V,
+                      const Eigen::MatrixXi& F, double unit, int vertex_rows, const ChartOptions& options) {
+  std::vector<int> flat;
+  size_t cut = 0;  // charts cut where their map was invalid
+  for (int round = 0;; ++round) {
+    ChartsResult result = lay_out_and_store(charts, guests, flat, unit_V, F, unit, vertex_rows, options);
+    const std::vector<int> invalid = result.error ? std::vector<int>() : invalid_faces(unit_V, F, result.corner_uv);
+    if (invalid.empty() || round == kMostRepairRounds) {
+      if (cut > 0)
+        result.notes.push_back(std::to_string(cut) + (cut == 1 ? " chart" : " charts") +
+                               " with flipped or zero-area triangles cut smaller and laid out again");
+      return result;
+    }
+    std::vector<int> invalid_charts;
+    for (const int f : invalid) invalid_charts.push_back(result.face_chart[size_t(f)]);
+    std::sort(invalid_charts.begin(), invalid_charts.end());
+    cut += size_t(std::unique(invalid_charts.begin(), invalid_charts.end()) - invalid_charts.begin());
+    cut_invalid_charts(charts, guests, result.face_chart, invalid, round + 1 == kMostRepairRounds, unit_V, F, options, flat);
+  }
 }
 
 }  // namespace lowstretch

@@ -14,8 +14,9 @@ namespace lowstretch {
 ChartsResult failed_result(Error error);
 
 // The charts laid out and measured as the result; the guests go into texels the tiling leaves
-// empty (lay_out).
-ChartsResult atlas_of(std::vector<SolvedChart> charts, const std::vector<int>& guests, const Eigen::MatrixXd& unit_V,
+// empty (lay_out). Charts with invalid faces as stored are cut and laid out again
+// (cut_invalid_charts.h).
+ChartsResult atlas_of(std::vector<SolvedChart> charts, std::vector<int> guests, const Eigen::MatrixXd& unit_V,
                       const Eigen::MatrixXi& F, double unit, int vertex_rows, const ChartOptions& options);
 
 // The layout as MeshLab stores it: inside the gutter, rounded to float, then measured; counts

@@ -20,6 +20,7 @@
 #include "split_until_bounded.h"
 #include "split_vertex_fans.h"
 #include "stretch.h"
+#include "zero_area_parts.h"
 
 namespace lowstretch {
 
@@ -289,12 +290,61 @@ ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, cons
   return result;
 }
 
-}  // namespace
+// The errors that a manifold copy of the mesh gets past (several components: when parts touch
+// at a vertex, that is found after the components).
+bool manifold_copy_helps(ErrorCode code) {
+  return code == ErrorCode::NonManifoldVertices || code == ErrorCode::SeveralComponents ||
+         code == ErrorCode::NonManifoldEdges || code == ErrorCode::InconsistentOrientation ||
+         code == ErrorCode::RepeatedVertexInFace;
+}
 
-ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options) {
+std::string count_text(int count, const char* one, const char* many) {
+  return std::to_string(count) + " " + (count == 1 ? one : many);
+}
+
+// The rows of V that faces use.
+Eigen::MatrixXd used_rows(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
+  std::vector<char> used(size_t(V.rows()), 0);
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) used[size_t(F(f, k))] = 1;
+  Eigen::MatrixXd rows(std::count(used.begin(), used.end(), 1), V.cols());
+  for (Eigen::Index v = 0, r = 0; v < V.rows(); ++v)
+    if (used[size_t(v)]) rows.row(r++) = V.row(v);
+  return rows;
+}
+
+// A triangle soup (each face with vertices of its own, as STL stores them): half or more of the
+// used vertices sit on another. Welding it, not cutting it, is the way out (as parameterize says).
+bool is_unwelded(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
+  const Eigen::MatrixXd used = used_rows(V, F);
+  return used.allFinite() && 2 * vertices_on_others(used) >= used.rows();  // NaN: refused later
+}
+
+// What the manifold copy changed, one note per kind of defect.
+std::vector<std::string> split_notes(const SplitFans& split) {
+  const std::string unchanged = " for the charts; the mesh is unchanged";
+  std::vector<std::string> notes;
+  if (split.non_manifold_edges > 0)
+    notes.push_back(count_text(split.non_manifold_edges, "non-manifold edge", "non-manifold edges") +
+                    " (shared by more than two faces) cut open" + unchanged);
+  if (split.misoriented_edges > 0)
+    notes.push_back(count_text(split.misoriented_edges, "edge", "edges") +
+                    " between faces of opposite orientation cut open" + unchanged);
+  if (split.repeated_vertex_faces > 0)
+    notes.push_back(count_text(split.repeated_vertex_faces, "face names", "faces name") +
+                    " a vertex twice (zero area): given corners of their own" + unchanged);
+  if (split.split_vertices > 0)
+    notes.push_back(count_text(split.split_vertices, "non-manifold vertex", "non-manifold vertices") +
+                    " (where parts, holes or cut edges touch) split per fan of faces" + unchanged);
+  return notes;
+}
+
+// parameterize_charts; `own_copies`: V holds copies of vertices made for a manifold copy, which
+// are no sign of an unwelded mesh.
+ChartsResult disk_or_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options, bool own_copies) {
   const Clock::time_point start = Clock::now();
-  if (Error e = check_chart_options(options)) return failed_result(e);
   Result whole = parameterize(V, F, options.disk);
+  if (own_copies && whole.error.code == ErrorCode::UnweldedVertices) whole.error = {ErrorCode::SeveralComponents, 0, ""};
   const auto disk_result = [&]() {
     ChartsResult result = from_disk(F, std::move(whole));
     double unit = 1;
@@ -308,43 +358,72 @@ ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi
     result.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
     return result;
   };
-  // Parts or holes that touch at a vertex: the charts are made on the mesh with that vertex split
-  // into one per fan of faces. (Such a vertex is found after several components, so both codes.)
-  const ErrorCode found = whole.error.code;
-  if (options.non_disk != NonDisk::Reject && (found == ErrorCode::NonManifoldVertices || found == ErrorCode::SeveralComponents)) {
+  // A mesh that is not manifold or not consistently oriented: the charts are made on a manifold
+  // copy (split_vertex_fans.h), cut open along its bad edges and split at its bad vertices.
+  if (options.non_disk != NonDisk::Reject && manifold_copy_helps(whole.error.code)) {
     const SplitFans split = split_vertex_fans(V, F);
-    if (split.split_vertices > 0) {
-      ChartsResult result = parameterize_charts(split.V, split.F, options);
+    if (split.new_vertices > 0) {
+      if (is_unwelded(V, F)) return failed_result({ErrorCode::UnweldedVertices, vertices_on_others(used_rows(V, F)), ""});
+      ChartsResult result = disk_or_atlas(split.V, split.F, options, true);
       if (result.error) return result;
       result.vertex_stretch = join_vertex_values(split, result.vertex_stretch, int(V.rows()));
-      const bool one = split.split_vertices == 1;
-      result.notes.insert(result.notes.begin(), std::to_string(split.split_vertices) +
-                                                    (one ? " non-manifold vertex" : " non-manifold vertices") +
-                                                    " (where parts or holes touch) split per fan of faces for the "
-                                                    "charts; the mesh is unchanged");
+      const std::vector<std::string> notes = split_notes(split);
+      result.notes.insert(result.notes.begin(), notes.begin(), notes.end());
       result.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
       return result;
     }
   }
-  const bool split_disk = !whole.error && options.non_disk == NonDisk::Atlas &&
-                          needs_split(as_chart_pass(whole.passes.at(size_t(whole.chosen_pass))), options.max_stretch);
-  if (!whole.error && !split_disk) return disk_result();
-  if (!split_disk && (options.non_disk == NonDisk::Reject || !charts_can_fix(whole.error.code))) return failed_result(whole.error);
+  // Parts of zero 3D area have nothing to map: the atlas is made of the other parts.
+  if (options.non_disk != NonDisk::Reject && whole.error.code == ErrorCode::SeveralComponents) {
+    double unit = 1;
+    const std::vector<int> zero_area = faces_of_zero_area_parts(unit_box_of_used(V, F, unit), F);
+    if (!zero_area.empty() && Eigen::Index(zero_area.size()) < F.rows()) {
+      std::vector<int> mapped;
+      for (Eigen::Index f = 0, z = 0; f < F.rows(); ++f)
+        if (size_t(z) < zero_area.size() && zero_area[size_t(z)] == f) ++z;
+        else mapped.push_back(int(f));
+      Eigen::MatrixXi mapped_F(Eigen::Index(mapped.size()), 3);
+      for (size_t j = 0; j < mapped.size(); ++j) mapped_F.row(Eigen::Index(j)) = F.row(mapped[j]);
+      ChartsResult result = disk_or_atlas(V, mapped_F, options, own_copies);
+      if (result.error) return result;
+      result = with_zero_area_faces(std::move(result), F, mapped, zero_area, options);
+      result.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
+      return result;
+    }
+  }
+  const bool is_disk = !whole.error;
+  if (!is_disk && (options.non_disk == NonDisk::Reject || !charts_can_fix(whole.error.code)))
+    return failed_result(whole.error);
+  // A disk keeps the paper's single chart, unless it has flipped or zero-area triangles as stored
+  // (or, for Atlas, stretches more than the bound) and an atlas uses the texture better.
+  ChartsResult disk;
+  if (is_disk) {
+    disk = disk_result();
+    const bool valid = disk.layout.flipped + disk.layout.degenerate == 0;
+    const bool try_atlas = options.non_disk == NonDisk::Atlas
+                               ? !valid || needs_split(as_chart_pass(disk.disk_passes.at(size_t(disk.chosen_pass))), options.max_stretch)
+                               : options.non_disk == NonDisk::Charts && !valid;
+    if (!try_atlas) return disk;
+  }
   const OneBlasThread one_blas_thread;  // both cores go to the charts
   ChartsResult atlas = make_atlas(V, F, options);
-  // A disk whose atlas uses the texture worse than its single map keeps the single map.
-  if (split_disk && !atlas.error) {
-    ChartsResult disk = disk_result();
-    if (texture_efficiency(disk) >= texture_efficiency(atlas)) {
+  if (is_disk && (atlas.error || !more_efficient(atlas, disk))) {
+    if (!atlas.error)
       disk.notes.push_back("the disk stays one chart: cut into " + std::to_string(atlas.charts.size()) +
                            " charts it had efficiency " + number_text(texture_efficiency(atlas)) + " (coverage / L2^2) against " +
                            number_text(texture_efficiency(disk)));
-      return disk;
-    }
+    return disk;
   }
   atlas.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
   atlas.layout.seconds = atlas.seconds_total;
   return atlas;
+}
+
+}  // namespace
+
+ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options) {
+  if (Error e = check_chart_options(options)) return failed_result(e);
+  return disk_or_atlas(V, F, options, false);
 }
 
 double texture_efficiency(const ChartsResult& r) {

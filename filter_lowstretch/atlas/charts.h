@@ -19,14 +19,15 @@
 
 namespace lowstretch {
 
-// What to do with a mesh: Reject a mesh that is not a disk; make an atlas of a mesh that is not
-// a disk (Charts; a disk keeps the paper's single chart); make an atlas of any mesh (Atlas: a
-// disk whose map meets max_stretch stays that one chart).
+// What to do with a mesh: Reject a mesh that is not a disk (disk-only); make an atlas of a mesh
+// that is not a disk (Charts, the default: a disk keeps the paper's single chart while that map
+// has no flipped or zero-area triangle); make an atlas of any mesh (Atlas: a disk whose map meets
+// max_stretch stays that one chart).
 enum class NonDisk { Reject, Charts, Atlas };
 
 struct ChartOptions {
   Options disk;                        // the method, for the whole disk or for each chart
-  NonDisk non_disk = NonDisk::Reject;  // Reject: a non-disk mesh is an error, as parameterize
+  NonDisk non_disk = NonDisk::Charts;  // Reject: a non-disk mesh is an error, as parameterize
   // The texture the map is made for: every UV stays `gutter` texels or more away from the border
   // of [0,1]^2, so that baking, mipmaps and rasterizers never address a texel outside the image
   // (UV exactly 0 or 1 would give texel -1 or `texture_size`).

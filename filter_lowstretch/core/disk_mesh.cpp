@@ -91,7 +91,8 @@ Error pair_half_edges(const Eigen::MatrixXi& F, std::vector<int>& twin, DiskMesh
   return {};
 }
 
-// The vertices that sit exactly where another vertex sits.
+}  // namespace
+
 long long vertices_on_others(const Eigen::MatrixXd& V) {
   std::vector<int> order(size_t(V.rows()));
   std::iota(order.begin(), order.end(), 0);
@@ -106,6 +107,8 @@ long long vertices_on_others(const Eigen::MatrixXd& V) {
   }
   return on_others;
 }
+
+namespace {
 
 // Several components; a triangle soup (each face with vertices of its own, as STL stores them)
 // is named as such, since the way out is to weld it, not to keep one part or make charts.

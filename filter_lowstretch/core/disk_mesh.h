@@ -32,6 +32,10 @@ struct UnitBox {
 };
 UnitBox unit_box(const Eigen::MatrixXd& points);
 
+// The vertices (rows of V) that sit exactly where another vertex sits: half or more of a mesh's
+// vertices do in a triangle soup.
+long long vertices_on_others(const Eigen::MatrixXd& V);
+
 // Fills `disk` or returns the first problem found: indices, finiteness, edge manifoldness,
 // orientation, components, vertex manifoldness, boundary loops, genus, zero total area.
 Error make_disk_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, DiskMesh& disk);

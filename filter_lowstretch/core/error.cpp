@@ -22,16 +22,17 @@ std::string message(const Error& e) {
       return plural(e.count, "face refers", "faces refer") + " to a vertex that does not exist: the file is corrupt";
     case ErrorCode::RepeatedVertexInFace:
       return plural(e.count, "face names", "faces name") +
-             " the same vertex twice: remove duplicate vertices in faces (Cleaning and Repairing) first";
+             " the same vertex twice: remove duplicate vertices in faces (Cleaning and Repairing) first, or " + kChartsHint;
     case ErrorCode::NonFiniteCoordinates:
       return plural(e.count, "vertex has", "vertices have") +
              " NaN or infinite coordinates: remove or repair those vertices first";
     case ErrorCode::NonManifoldEdges:
       return plural(e.count, "non-manifold edge", "non-manifold edges") +
-             " (shared by more than two faces): repair non-manifold edges first";
+             " (shared by more than two faces): repair non-manifold edges first, or " + kChartsHint;
     case ErrorCode::InconsistentOrientation:
       return plural(e.count, "edge joins faces", "edges join faces") +
-             " of opposite orientation: the mesh is not consistently oriented (or not orientable); re-orient the faces coherently first";
+             " of opposite orientation: the mesh is not consistently oriented (or not orientable); re-orient the faces "
+             "coherently first, or " + kChartsHint;
     case ErrorCode::NonManifoldVertices:
       return plural(e.count, "non-manifold vertex", "non-manifold vertices") +
              " (several fans of faces meet there): split non-manifold vertices first, or " + kChartsHint;
@@ -76,7 +77,8 @@ std::string number_text(double value) {
 
 bool charts_would_help(ErrorCode code) {
   return code == ErrorCode::SeveralComponents || code == ErrorCode::Closed || code == ErrorCode::SeveralBoundaryLoops ||
-         code == ErrorCode::NotGenusZero || code == ErrorCode::NonManifoldVertices;
+         code == ErrorCode::NotGenusZero || code == ErrorCode::NonManifoldVertices || code == ErrorCode::NonManifoldEdges ||
+         code == ErrorCode::InconsistentOrientation || code == ErrorCode::RepeatedVertexInFace;
 }
 
 const char* code_name(ErrorCode code) {

@@ -35,6 +35,12 @@ FaceStretch face_stretch(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, con
     const double s1 = UV(F(f, 0), 0), s2 = UV(F(f, 1), 0), s3 = UV(F(f, 2), 0);
     const double t1 = UV(F(f, 0), 1), t2 = UV(F(f, 1), 1), t3 = UV(F(f, 2), 1);
     const double a_uv = s.area_uv(f);
+    if (std::abs(a_uv) <= tolerance && is_flat_face(V, F, f)) {
+      // No surface to stretch or collapse (a scan's zero-area face): a point or segment in UV too.
+      s.valid(f) = true;
+      s.sigma(f) = s.gamma(f) = 0;
+      continue;
+    }
     s.valid(f) = a_uv > tolerance;
     if (a_uv < -tolerance) ++s.flipped;
     else if (!s.valid(f)) ++s.degenerate;

@@ -3,6 +3,8 @@
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "method_types.h"
@@ -13,7 +15,8 @@ struct FaceStretch {
   Eigen::VectorXd area_3d;  // per face
   Eigen::VectorXd area_uv;  // signed parameter area, positive = counter-clockwise
   // L2 stretch sqrt((a + c) / 2) and Linf stretch (largest singular value) per face, computed
-  // with |A_U| bounded away from zero so that they stay finite; `valid` marks A_U > tolerance.
+  // with |A_U| bounded away from zero so that they stay finite; `valid` marks A_U > tolerance,
+  // or a flat face (is_flat_face) whose A_U is zero too (sigma = gamma = 0: nothing to stretch).
   Eigen::VectorXd sigma, gamma;
   Eigen::Matrix<bool, Eigen::Dynamic, 1> valid;
   // sqrt(sum |A_U| / sum A_3D): multiplying by it makes an isometry up to scale read 1.
@@ -25,6 +28,16 @@ struct FaceStretch {
 inline double face_area_3d(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, Eigen::Index f) {
   const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
   return 0.5 * (b - a).cross(c - a).norm();
+}
+
+// Whether face f of a mesh in a unit box (make_disk_mesh's) has no 3D area up to the rounding
+// of its coordinates (its corners on one line or point, as a scan's zero-area faces are): its
+// height over its longest edge is at most 1e-14, where moving the mesh into the box leaves about
+// 1e-16.
+inline bool is_flat_face(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, Eigen::Index f) {
+  const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
+  const double longest = std::sqrt(std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()}));
+  return (b - a).cross(c - a).norm() <= 1e-14 * longest;
 }
 
 // Signed area of the UV triangle abc, positive when counter-clockwise.

@@ -61,15 +61,17 @@ Parameters make_parameters() {
                     "Weights of the initial map U0: Floater's shape-preserving weights (the "
                     "paper's choice), mean value weights, or harmonic (cotangent) weights, "
                     "which can be negative and are offered for comparison only."},
-      EnumParameter{"nonDisk", 0, {"Reject", "Make charts", "Atlas for any mesh"}, "Non-disk input",
+      EnumParameter{"nonDisk", int(chart_defaults.non_disk), {"Reject", "Make charts", "Atlas for any mesh"}, "Non-disk input",
                     "What to do with a mesh that is not a disk (holes, closed, handles, several "
-                    "parts): reject it with the reason, or make charts: a low-stretch atlas. Every "
+                    "parts, non-manifold edges or vertices): reject it with the reason (disk only), "
+                    "or make charts (the default): a low-stretch atlas. Every "
                     "part becomes a chart (holes closed virtually, closed parts cut along short "
                     "seams), a chart that stretches more than Max chart stretch is cut in two "
                     "and mapped again, every chart gets a rectangle and the rectangles tile the "
                     "texture a gutter apart. Make charts keeps a disk as one chart (the paper's "
-                    "map); Atlas for any mesh cuts a disk too when that uses the texture better. "
-                    "Non-manifold or inconsistently oriented meshes are rejected either way."},
+                    "map while it has no flipped or zero-area triangle); Atlas for any mesh cuts a "
+                    "disk too when that uses the texture better. Non-manifold edges and vertices "
+                    "are cut open for the charts; the mesh itself is not changed."},
       FloatParameter{"maxStretch", chart_defaults.max_stretch, "Max chart stretch",
                      "Charts: a chart whose L2 stretch is above this (at least 1) is cut in two. "
                      "Lower gives less stretch, more charts and longer seams."},

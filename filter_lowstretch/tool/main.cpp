@@ -28,8 +28,10 @@ const char* kUsage =
     "Reads OFF, OBJ or PLY; writes per-corner texture coordinates and stretch as quality.\n"
     "Every texture coordinate stays G texels (default 2) inside the border of an N x N texture\n"
     "(default 1024), so that baking a texture of that size never addresses a texel outside it.\n"
-    "--non-disk charts makes an atlas of a mesh that is not a disk (holes, closed, handles, several\n"
-    "parts); reject (the default) refuses it. --atlas makes an atlas of any mesh: a chart whose L2\n"
+    "A mesh that is not a disk (holes, closed, handles, several parts, non-manifold edges or\n"
+    "vertices) gets an atlas (--non-disk charts, the default); --non-disk reject refuses it.\n"
+    "A disk gets the paper's single chart, or an atlas if that map has a flipped or zero-area\n"
+    "triangle. --atlas makes an atlas of any mesh: a chart whose L2\n"
     "stretch is above S (default 1.2) is cut in two and mapped again; every chart gets a rectangle\n"
     "and the rectangles tile the texture, G texels apart. A disk that meets S stays one chart.\n"
     "--all-passes runs max-passes passes even when the stretch stops falling (benchmarks).\n"
@@ -77,10 +79,9 @@ std::string parse(int argc, char** argv, Arguments& a) {
     else if (arg == "--svg") a.svg = value();
     else if (arg == "--non-disk") {
       const std::string v = value();
+      if (v != "reject" && v != "charts") return "--non-disk takes reject or charts, not '" + v + "'";
       if (a.charts.non_disk == NonDisk::Atlas) continue;  // --atlas covers non-disks too
-      if (v == "reject") a.charts.non_disk = NonDisk::Reject;
-      else if (v == "charts") a.charts.non_disk = NonDisk::Charts;
-      else return "--non-disk takes reject or charts, not '" + v + "'";
+      a.charts.non_disk = v == "reject" ? NonDisk::Reject : NonDisk::Charts;
     }
     else if (arg == "--solver") {
       const std::string v = value();

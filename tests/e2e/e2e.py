@@ -141,9 +141,13 @@ def meshlabserver(prefix, work, log_name, args, timeout=900):
     return proc
 
 
-def run_tool(tool, work, input_path, output_path, boundary):
+def run_tool(tool, work, input_path, output_path, boundary, disk_only=None):
+    """The tool with the options of the boundary's script: the circle and natural scripts are
+    disk only (Non-disk input: Reject), lowstretch.mlx makes charts of a non-disk (the default)."""
+    if disk_only is None:
+        disk_only = boundary != "square"
     command = [tool, input_path, "-o", output_path, "--boundary", boundary, "--weights", TOOL_WEIGHTS,
-               "--exponent", "1", "--max-passes", "10", "--json"]
+               "--exponent", "1", "--max-passes", "10", "--json"] + (["--non-disk", "reject"] if disk_only else [])
     proc = subprocess.run(command, cwd=work, capture_output=True, text=True, errors="replace", timeout=900)
     with open(os.path.join(work, "tool.log"), "w") as f:
         f.write("$ " + " ".join(command) + f"\nexit code {proc.returncode}\n--- stdout ---\n{proc.stdout}"
@@ -456,7 +460,7 @@ def overlapping_pixels(triangles, n=1024):
 
 
 def cmd_charts(args):
-    """A mesh that is not a disk, with "Non-disk input: Make charts": per-wedge texcoords in
+    """A mesh that is not a disk, with "Non-disk input: Make charts" (the default): per-wedge texcoords in
     [0,1]^2 on every face, no flipped or zero-area triangle, no overlap; the same charts, seams and
     stretch as the lowstretch tool on the same (float) input."""
     check = Checks()
@@ -468,7 +472,7 @@ def cmd_charts(args):
         return check
     out = os.path.join(args.work, "out.ply")
     proc = meshlabserver(args.prefix, args.work, "meshlabserver.log",
-                         ["-i", reference, "-o", out] + mask + ["-s", os.path.join(args.resources, "lowstretch_charts.mlx")])
+                         ["-i", reference, "-o", out] + mask + ["-s", os.path.join(args.resources, "lowstretch.mlx")])
     if not check(proc.returncode == 0 and os.path.isfile(out), f"meshlabserver applies the filter (exit code {proc.returncode})"):
         return check
     summary = CHARTS_RE.search(proc.stdout)
@@ -519,10 +523,13 @@ def script_with(args, settings, path):
 
 
 def cmd_bad(args):
-    """Bad input (a bad mesh, or a good one with --set of an invalid parameter value)."""
+    """Bad input (a bad mesh, or a good one with --set of an invalid parameter value), in disk-only
+    mode (Non-disk input: Reject) unless --set says otherwise."""
     check = Checks()
     input_path, name = prepare(args, {**generate.BAD, **generate.DISKS})
-    script = script_with(args, args.set, os.path.join(args.work, "script.mlx")) if args.set else mlx(args)
+    if not any(s.startswith("nonDisk=") for s in args.set):
+        args.set = ["nonDisk=0"] + args.set
+    script = script_with(args, args.set, os.path.join(args.work, "script.mlx"))
     mask = ["-m", "vt", "wt", "vq", "fq"]
     reference = os.path.join(args.work, "reference.ply")
     proc = meshlabserver(args.prefix, args.work, "reference.log", ["-i", input_path, "-o", reference] + mask)
@@ -543,9 +550,9 @@ def cmd_bad(args):
     if expected:
         check(expected in message, f"the message names the problem ('{expected}')")
 
-    if args.tool and not args.set:
+    if args.tool and args.set == ["nonDisk=0"]:
         tool_out = os.path.join(args.work, "tool.ply")
-        tool = run_tool(args.tool, args.work, reference, tool_out, "square")
+        tool = run_tool(args.tool, args.work, reference, tool_out, "square", disk_only=True)
         check(tool.returncode != 0 and message and core_message(message) in tool.stderr and not os.path.exists(tool_out),
               f"the lowstretch tool rejects the same mesh with the same message (exit code {tool.returncode}: "
               f"{tool.stderr.strip()[:300]})")

@@ -102,7 +102,9 @@ def cmd_disk(args):
     check = e2e.Checks()
     input_path, name = e2e.prepare(args, generate.DISKS)
     before, out = os.path.join(args.work, "before.ply"), os.path.join(args.work, "out.ply")
-    proc = run_runner(args, input_path, before, out, [f"boundaryShape={BOUNDARY_INDEX[args.boundary]}"])
+    # As the 2020.09 scripts: circle and natural disk only, square the default (charts of a non-disk).
+    disk_only = ["nonDisk=0"] if args.boundary != "square" else []
+    proc = run_runner(args, input_path, before, out, [f"boundaryShape={BOUNDARY_INDEX[args.boundary]}"] + disk_only)
     check_plugin_line(check, proc)
     os.chdir(args.work)  # the PLY names its texture relative to itself
     print("info:   the checks below come from tests/e2e/e2e.py: its 'meshlabserver' is the runner here")
@@ -115,6 +117,8 @@ def cmd_bad(args):
     check = e2e.Checks()
     input_path, name = e2e.prepare(args, {**generate.BAD, **generate.DISKS})
     before, after = os.path.join(args.work, "before.ply"), os.path.join(args.work, "after.ply")
+    if not any(s.startswith("nonDisk=") for s in args.set):  # disk only, unless the test sets it
+        args.set = ["nonDisk=0"] + args.set
     proc = run_runner(args, input_path, before, after, args.set)
     lines = fields(proc)
     if not check(proc.returncode == 1 and lines.get("result") == "failed",
@@ -128,9 +132,9 @@ def cmd_bad(args):
     if expected:
         check(expected in message, f"the message names the problem ('{expected}')")
     check(not OUTPUT_RE.search(proc.stdout), "no output values")
-    if args.tool and not args.set:
+    if args.tool and args.set == ["nonDisk=0"]:
         tool_out = os.path.join(args.work, "tool.ply")
-        tool = e2e.run_tool(args.tool, args.work, before, tool_out, "square")
+        tool = e2e.run_tool(args.tool, args.work, before, tool_out, "square", disk_only=True)
         check(tool.returncode != 0 and message and core_message(message) in tool.stderr and not os.path.exists(tool_out),
               f"the lowstretch tool rejects the same mesh with the same message (exit code {tool.returncode}: "
               f"{tool.stderr.strip()[:300]})")

@@ -135,8 +135,8 @@ def inside(args):
     m = ms.current_mesh()
     before = (m.vertex_matrix().copy(), m.face_matrix().copy())
     try:
-        ms.apply_filter(NAME)
-        check(False, "a mesh that is not a disk raises PyMeshLabException")
+        ms.apply_filter(NAME, nondisk="Reject")
+        check(False, "a mesh that is not a disk raises PyMeshLabException in disk-only mode")
     except pymeshlab.PyMeshLabException as e:
         check(args.expect in str(e), f"a mesh that is not a disk raises PyMeshLabException naming the problem "
               f"('{args.expect}'): '{' / '.join(str(e).splitlines())}'")
@@ -144,10 +144,10 @@ def inside(args):
     check((m.vertex_matrix() == before[0]).all() and (m.face_matrix() == before[1]).all()
           and not m.has_wedge_tex_coord(), "that mesh is unchanged and has no texcoords")
 
-    charts = ms.apply_filter(NAME, nondisk="Make charts")
-    print(f"        nondisk='Make charts': {json.dumps(charts)}")
+    charts = ms.apply_filter(NAME)
+    print(f"        default (nondisk='Make charts'): {json.dumps(charts)}")
     check(set(charts) == set(KEYS) and charts["charts"] >= 1 and charts["flipped"] == 0 and charts["degenerate"] == 0
-          and 0 < charts["coverage"] <= 1, f"nondisk='Make charts' parameterizes it: {charts['charts']} charts, "
+          and 0 < charts["coverage"] <= 1, f"by default it is parameterized as charts: {charts['charts']} charts, "
           f"coverage {charts['coverage']:.4g}, no flip")
     m = ms.current_mesh()
     if check(m.has_wedge_tex_coord(), "it now has per-wedge texcoords"):

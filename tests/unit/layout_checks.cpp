@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -53,7 +55,7 @@ int overlapping_pixels(const ChartsResult& r) {
   return overlaps;
 }
 
-void expect_valid_layout(const Eigen::MatrixXi& F, const ChartsResult& r) {
+void expect_valid_layout(const Eigen::MatrixXi& F, const ChartsResult& r, const Eigen::MatrixXd* V) {
   ASSERT_FALSE(r.error) << message(r.error);
   ASSERT_EQ(r.corner_uv.rows(), F.rows());
   ASSERT_EQ(r.corner_uv.cols(), 6);
@@ -62,7 +64,12 @@ void expect_valid_layout(const Eigen::MatrixXi& F, const ChartsResult& r) {
   EXPECT_GE(r.corner_uv.minCoeff(), gutter - 1e-15);
   EXPECT_LE(r.corner_uv.maxCoeff(), 1 - gutter + 1e-15);
   int not_positive = 0;
-  for (Eigen::Index f = 0; f < F.rows(); ++f) not_positive += !(signed_area(corner(r, f, 0), corner(r, f, 1), corner(r, f, 2)) > 0);
+  for (Eigen::Index f = 0; f < F.rows(); ++f) {
+    const double area = signed_area(corner(r, f, 0), corner(r, f, 1), corner(r, f, 2));
+    const auto p = [&](int k) { return Eigen::Vector3d(V->row(F(f, k)).transpose()); };
+    const bool no_surface = V && (p(1) - p(0)).cross(p(2) - p(0)).norm() == 0;
+    not_positive += no_surface ? area < 0 : !(area > 0);
+  }
   EXPECT_EQ(not_positive, 0);
   EXPECT_EQ(r.layout.flipped, 0);
   EXPECT_EQ(r.layout.degenerate, 0);

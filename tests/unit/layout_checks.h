@@ -19,7 +19,8 @@ std::vector<double> texel_densities(const Eigen::MatrixXd& V, const Eigen::Matri
 int overlapping_pixels(const ChartsResult& r);
 
 // Every face mapped, inside the default gutter, no flipped or zero-area triangle, no overlap,
-// finite stretch, every face in one of the charts.
-void expect_valid_layout(const Eigen::MatrixXi& F, const ChartsResult& r);
+// finite stretch, every face in one of the charts. With V, a face of zero 3D area may have zero
+// UV area (never a negative one).
+void expect_valid_layout(const Eigen::MatrixXi& F, const ChartsResult& r, const Eigen::MatrixXd* V = nullptr);
 
 }  // namespace lowstretch

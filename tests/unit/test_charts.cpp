@@ -163,8 +163,11 @@ TEST(Charts, TrianglesThatFloatRoundingCollapsesAreCountedAndNoted) {
   V << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 1e-12, 0;
   Eigen::MatrixXi F(4, 3);
   F << 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4;
-  const ChartsResult r = parameterize_charts(V, F, ChartOptions());
+  ChartOptions disk_only;
+  disk_only.non_disk = NonDisk::Reject;
+  const ChartsResult r = parameterize_charts(V, F, disk_only);
   ASSERT_FALSE(r.error) << message(r.error);
+  ASSERT_TRUE(r.input_is_disk);
   const PassMetrics& kept = r.disk_passes[size_t(r.chosen_pass)];
   EXPECT_EQ(kept.flipped + kept.degenerate, 0);  // in double
   EXPECT_EQ(r.float_collapsed, 1);
@@ -172,6 +175,13 @@ TEST(Charts, TrianglesThatFloatRoundingCollapsesAreCountedAndNoted) {
   EXPECT_GE(r.subtexel_triangles, 1);
   EXPECT_TRUE(std::any_of(r.notes.begin(), r.notes.end(),
                           [](const std::string& n) { return n.find("rounded to float") != std::string::npos; }));
+  // By default that disk gets charts instead: the thin triangle apart, mapped fatter, so that
+  // float keeps it, and every triangle positive as stored.
+  const ChartsResult atlas = parameterize_charts(V, F, ChartOptions());
+  EXPECT_FALSE(atlas.input_is_disk);
+  expect_valid_layout(F, atlas);
+  EXPECT_EQ(atlas.float_collapsed, 0);
+  EXPECT_GT(texture_efficiency(atlas), 0.9);
 }
 
 TEST(Charts, GutterIsCountedInTexelsOfTheStatedTexture) {
@@ -200,8 +210,8 @@ TEST(Charts, TextureSizeAndGutterOutOfRangeAreRefusedByName) {
   }
 }
 
-TEST(Charts, RejectIsTheDefaultAndItsMessageNamesTheOption) {
-  EXPECT_EQ(ChartOptions().non_disk, NonDisk::Reject);
+TEST(Charts, ChartsIsTheDefaultAndRejectsMessageNamesTheOption) {
+  EXPECT_EQ(ChartOptions().non_disk, NonDisk::Charts);
   const std::vector<std::pair<testmesh::Mesh, ErrorCode>> cases = {
       {testmesh::two_grids(3), ErrorCode::SeveralComponents},
       {testmesh::sphere(6, 8), ErrorCode::Closed},
@@ -428,16 +438,52 @@ TEST(Charts, HolesTouchingAtAVertexAreOneAtlas) {
   }
 }
 
-TEST(Charts, MisorientedAndNonManifoldEdgesStayRejected) {
+TEST(Charts, MisorientedAndNonManifoldEdgesAreCutOpenForTheCharts) {
   // A closed mesh with one face turned over.
   testmesh::Mesh turned = testmesh::octahedron();
   std::swap(turned.F(0, 1), turned.F(0, 2));
-  EXPECT_EQ(charts_of(turned).error.code, ErrorCode::InconsistentOrientation);
-  // Three faces on one edge.
+  // Three faces on one edge (a fin), and four.
   testmesh::Mesh fin = testmesh::two_grids(2);
   fin.F.conservativeResize(fin.F.rows() + 1, 3);
   fin.F.bottomRows(1) << 0, 4, 12;  // 0-4 is an interior diagonal
-  EXPECT_EQ(charts_of(fin).error.code, ErrorCode::NonManifoldEdges);
+  testmesh::Mesh fins = fin;
+  fins.F.conservativeResize(fins.F.rows() + 1, 3);
+  fins.F.bottomRows(1) << 4, 0, 13;
+  const std::vector<std::pair<testmesh::Mesh, ErrorCode>> cases = {
+      {turned, ErrorCode::InconsistentOrientation}, {fin, ErrorCode::NonManifoldEdges}, {fins, ErrorCode::NonManifoldEdges}};
+  for (const auto& c : cases) {
+    EXPECT_EQ(charts_of(c.first, NonDisk::Reject).error.code, c.second);
+    const testmesh::Mesh before = c.first;
+    const ChartsResult r = charts_of(c.first);
+    expect_valid_layout(c.first.F, r);
+    EXPECT_TRUE(c.first.F == before.F && c.first.V == before.V) << "the input is not changed";
+    EXPECT_EQ(r.vertex_stretch.rows(), c.first.V.rows());
+  }
+}
+
+TEST(Charts, FacesOfZeroAreaPartsGetZeroAreaCoordinates) {
+  testmesh::Mesh m = testmesh::grid(4);
+  const Eigen::Index n = m.V.rows(), faces = m.F.rows();
+  // Dust of zero area: a triangle on a line, away from the grid, and a face naming a vertex twice.
+  m.V.conservativeResize(n + 3, 3);
+  m.V.bottomRows(3) << 2, 2, 2, 3, 3, 3, 4, 4, 4;
+  m.F.conservativeResize(faces + 2, 3);
+  m.F.bottomRows(2) << int(n), int(n) + 1, int(n) + 2, 0, 0, 1;
+  EXPECT_EQ(charts_of(m, NonDisk::Reject).error.code, ErrorCode::RepeatedVertexInFace);
+  const ChartsResult r = charts_of(m);
+  expect_valid_layout(m.F, r, &m.V);
+  for (const Eigen::Index f : {faces, faces + 1})
+    EXPECT_EQ(signed_area(corner(r, f, 0), corner(r, f, 1), corner(r, f, 2)), 0) << "face " << f;
+  for (Eigen::Index f = 0; f < faces; ++f) EXPECT_GT(signed_area(corner(r, f, 0), corner(r, f, 1), corner(r, f, 2)), 0);
+  EXPECT_NEAR(r.layout.l2_stretch, 1, 1e-6) << "a flat grid, and dust that adds no area";
+}
+
+TEST(Charts, ADiskKeepsItsSingleMapByDefaultWhileItIsValid) {
+  const testmesh::Mesh disk = testmesh::hemisphere(8, 16);
+  const ChartsResult single = charts_of(disk, NonDisk::Reject), by_default = charts_of(disk);
+  ASSERT_FALSE(single.error);
+  EXPECT_TRUE(single.input_is_disk && by_default.input_is_disk);
+  EXPECT_EQ(single.corner_uv, by_default.corner_uv);
 }
 
 TEST(Charts, SharedNonDiskMeshes) {

@@ -70,13 +70,14 @@ grep -q '^vt ' "$work/out.obj" && grep -q 'map_Kd' "$work/out.obj.mtl" && passed
 check "json is one object" 0 "$work/disk.off" --json --boundary circle --max-passes 2
 python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert {"vertices","faces","boundary","weights","exponent","passes","chosen_pass","seconds_total"} <= d.keys(); assert all({"pass","l2_stretch","linf_stretch","edge_distortion","angle_distortion","area_distortion","flipped","degenerate","seconds"} <= p.keys() for p in d["passes"])' "$work/stdout" \
   && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL json keys"; }
-check "two components rejected" 3 "$work/two.off" -o "$work/out.ply"
+check "two components rejected when disk only" 3 "$work/two.off" --non-disk reject -o "$work/out.ply"
 grep -q "2 connected components" "$work/stderr" && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL message"; }
 grep -q -- "--non-disk charts" "$work/stderr" && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL message names --non-disk charts"; }
-check "two components as charts" 0 "$work/two.off" --non-disk charts -o "$work/out.obj" --svg "$work/uv.svg" --json
+check "two components as charts by default" 0 "$work/two.off" -o "$work/out.obj" --svg "$work/uv.svg" --json
 python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["chart_count"] == 2 and d["input_is_disk"] is False and d["seam_length"] == 0 and d["layout"]["flipped"] == 0 and 0 < d["coverage"] <= 1 and len(d["charts"]) == 2' "$work/stdout" \
   && [ "$(grep -c '^vt ' "$work/out.obj")" -ge 6 ] && [ -s "$work/uv.svg" ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL charts: json, vt or svg"; }
 check "bad --non-disk value" 1 "$work/two.off" --non-disk maybe -o "$work/out.ply"
+check "bad --non-disk value after --atlas" 1 "$work/two.off" --atlas --non-disk bogus -o "$work/out.ply"
 check "disk as an atlas" 0 "$work/disk.off" --atlas --max-stretch 1.05 -o "$work/out.obj" --json
 python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["non_disk"] == "atlas" and d["max_stretch"] == 1.05 and d["layout"]["flipped"] == 0 and abs(d["efficiency"] - d["coverage"] / d["layout"]["l2_stretch"] ** 2) < 1e-6 and d["max_chart_stretch"] == max(c["l2_stretch"] for c in d["charts"])' "$work/stdout" \
   && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL atlas json"; }
@@ -98,19 +99,18 @@ check "direct solver" 0 "$work/disk.off" --solver direct -o "$work/out.ply"
 check "unwritable output" 4 "$work/disk.off" -o "$work/no/such/folder/out.ply"
 # An existing output stays untouched when the input is bad.
 echo keep >"$work/keep.ply"
-"$tool" "$work/two.off" -o "$work/keep.ply" 2>/dev/null
+"$tool" "$work/two.off" --non-disk reject -o "$work/keep.ply" 2>/dev/null
 [ "$(cat "$work/keep.ply")" = keep ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL existing output changed"; }
 
 if [ -d "$shared/bad" ]; then
   for f in "$shared"/bad/* "$shared"/parse_errors/*; do
     case $f in */parse_errors/*) want=2 ;; *) want=3 ;; esac
-    check "$(basename "$f")" $want "$f" -o "$work/out.ply"
+    check "$(basename "$f") disk only" $want "$f" --non-disk reject -o "$work/out.ply"
   done
-  # With charts only the misoriented ones stay rejected (the shared non-manifold meshes have
-  # non-manifold vertices only, which charts split per fan).
+  # By default every one gets charts (non-manifold, misoriented and non-orientable ones cut open
+  # for them).
   for f in "$shared"/bad/*; do
-    case $f in *nonorientable*|*orientation*) want=3 ;; *) want=0 ;; esac
-    check "$(basename "$f") as charts" $want "$f" --non-disk charts -o "$work/out.ply"
+    check "$(basename "$f") by default" 0 "$f" -o "$work/out.ply"
   done
 fi
 echo "tool_exit_codes: $passed passed, $failed failed"
