@@ -259,7 +259,12 @@ ChartsResult atlas_of(std::vector<SolvedChart> charts, std::vector<int> guests, 
   for (int round = 0;; ++round) {
     ChartsResult result = lay_out_and_store(charts, guests, flat, unit_V, F, unit, vertex_rows, options);
     const std::vector<int> invalid = result.error ? std::vector<int>() : invalid_faces(unit_V, F, result.corner_uv);
-    if (invalid.empty() || round == kMostRepairRounds) {
+    std::vector<int> stretched;
+    for (size_t c = 0; c < charts.size() && !result.error; ++c)
+      if (charts[c].cut_for_validity && charts[c].faces.size() > 1 &&
+          !(result.charts[c].l2_stretch <= kPieceFarAbove * options.max_stretch))
+        stretched.push_back(int(c));
+    if ((invalid.empty() && stretched.empty()) || round == kMostRepairRounds) {
       if (cut > 0)
         result.notes.push_back(std::to_string(cut) + (cut == 1 ? " chart" : " charts") +
                                " with flipped or zero-area triangles cut smaller and laid out again");
@@ -269,7 +274,8 @@ ChartsResult atlas_of(std::vector<SolvedChart> charts, std::vector<int> guests, 
     for (const int f : invalid) invalid_charts.push_back(result.face_chart[size_t(f)]);
     std::sort(invalid_charts.begin(), invalid_charts.end());
     cut += size_t(std::unique(invalid_charts.begin(), invalid_charts.end()) - invalid_charts.begin());
-    cut_invalid_charts(charts, guests, result.face_chart, invalid, round + 1 == kMostRepairRounds, unit_V, F, options, flat);
+    cut_invalid_charts(charts, guests, result.face_chart, invalid, stretched, round + 1 == kMostRepairRounds, unit_V, F,
+                       options, flat);
   }
 }
 

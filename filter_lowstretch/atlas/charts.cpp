@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "atlas_result.h"
+#include "cut_invalid_charts.h"
 #include "disk_mesh.h"
 #include "empty_texels.h"
 #include "free_charts.h"
@@ -399,7 +400,8 @@ ChartsResult disk_or_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, c
   ChartsResult disk;
   if (is_disk) {
     disk = disk_result();
-    const bool valid = disk.layout.flipped + disk.layout.degenerate == 0;
+    double unit = 1;
+    const bool valid = invalid_faces(unit_box_of_used(V, F, unit), F, disk.corner_uv).empty();
     const bool try_atlas = options.non_disk == NonDisk::Atlas
                                ? !valid || needs_split(as_chart_pass(disk.disk_passes.at(size_t(disk.chosen_pass))), options.max_stretch)
                                : options.non_disk == NonDisk::Charts && !valid;

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <utility>
 
+#include "half_edges.h"
 #include "mesh_components.h"
+#include "split_chart.h"
 #include "stretch.h"
 
 namespace lowstretch {
@@ -30,23 +32,31 @@ std::vector<std::vector<int>> connected_parts(const std::vector<int>& faces, con
   return parts;
 }
 
+// A UV triangle under this share of the texture is lost to every texture size and to rounding
+// (a 1024^2 texel is 1e-6 of it): a sliver of a reconstruction, mapped to scale. The atlas
+// benchmark counts one under 1e-12 of the layout's square as zero-area.
+const double kLeastUvArea = 1e-11;
+
 }  // namespace
 
 std::vector<int> invalid_faces(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& corner_uv) {
   std::vector<int> invalid;
   for (Eigen::Index f = 0; f < F.rows(); ++f)
-    if (!(stored_area(corner_uv, f) > 0) && !is_flat_face(unit_V, F, f)) invalid.push_back(int(f));
+    if (!(stored_area(corner_uv, f) > kLeastUvArea) && !is_flat_face(unit_V, F, f)) invalid.push_back(int(f));
   return invalid;
 }
 
 void cut_invalid_charts(std::vector<SolvedChart>& charts, std::vector<int>& guests, const std::vector<int>& face_chart,
-                        const std::vector<int>& invalid, bool into_faces, const Eigen::MatrixXd& unit_V,
-                        const Eigen::MatrixXi& F, const ChartOptions& options, std::vector<int>& flat) {
-  std::vector<char> taken(size_t(F.rows()), 0), cut(charts.size(), 0);
+                        const std::vector<int>& invalid, const std::vector<int>& stretched, bool into_faces,
+                        const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const ChartOptions& options,
+                        std::vector<int>& flat) {
+  std::vector<char> taken(size_t(F.rows()), 0), cut(charts.size(), 0), split(charts.size(), 0);
   for (const int f : invalid) {
     taken[size_t(f)] = 1;
     cut[size_t(face_chart[size_t(f)])] = 1;
   }
+  for (const int c : stretched) split[size_t(c)] = cut[size_t(c)] = !cut[size_t(c)];
+  const std::vector<int> twin = stretched.empty() ? std::vector<int>() : opposite_half_edges(F);
   guests.erase(std::remove_if(guests.begin(), guests.end(), [&](int g) { return cut[size_t(g)] != 0; }), guests.end());
   std::vector<int> local_of(size_t(unit_V.rows()), -1);
   std::vector<SolvedChart> pieces;
@@ -68,12 +78,14 @@ void cut_invalid_charts(std::vector<SolvedChart>& charts, std::vector<int>& gues
     if (!cut[c]) continue;
     for (const int f : charts[c].faces)
       if (into_faces || taken[size_t(f)]) add_piece({f});
-    if (!into_faces)
-      for (std::vector<int>& part : connected_parts(charts[c].faces, taken, F)) add_piece(std::move(part));
+    if (into_faces) continue;
+    for (std::vector<int>& part : split[c] ? split_chart(unit_V, F, twin, charts[c].faces) : connected_parts(charts[c].faces, taken, F))
+      add_piece(std::move(part));
   }
   for (SolvedChart& piece : pieces) {
+    solve_chart(piece, options.disk, 0);  // may replace the chart by its square map: marked after
     piece.kept_whole = "cut where its map was invalid";
-    solve_chart(piece, options.disk, 0);
+    piece.cut_for_validity = true;
   }
   std::vector<SolvedChart> kept;
   std::vector<int> new_index(charts.size(), -1);

@@ -54,6 +54,7 @@ struct SolvedChart {
   bool deciding_map = false;  // made while deciding where to cut (fewer passes, looser solve)
   bool free_boundary = false;  // mapped with the natural boundary: its shape is kept in its cell
   bool cut_ahead = false;  // cut again before it was mapped (cuts_ahead): it has no map
+  bool cut_for_validity = false;  // a piece of a chart whose map was invalid (cut_invalid_charts.h)
   double aspect() const { return box.sizes().y() > 0 ? box.sizes().x() / box.sizes().y() : 1; }  // width / height
   // box := the box of the real faces' UV, after the map changed.
   void fit_box();

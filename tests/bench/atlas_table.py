@@ -13,8 +13,9 @@ libusb-1.0-0); each peer runs in a child process, so that a native crash is repo
 - efficiency: coverage / L2^2 (1 would use every texel with no stretch).
 - seam: 3D length of edges whose two faces have different UVs, over sqrt(3D area); boundary
   edges are not seams.
-- flips/zero-area: faces against their chart's majority orientation / |UV area| <= 1e-12 of the
-  layout square's area.
+- flips/zero-area: faces against their chart's majority orientation / faces with 3D area whose
+  |UV area| <= 1e-12 of the layout square's area (a face of zero 3D area may map to zero area).
+The summary line also says whether every input face came back with texture coordinates.
 - seconds: wall clock (ours: the whole process; peers: the parametrizing call only).
 - overlap px: raster pixels whose centre is inside two or more UV triangles.
 Exit status 1 when a tool failed (a crash, or an error exit other than our tool's 3, mesh not
@@ -201,8 +202,11 @@ def atlas_metrics(V, F, corner_uv):
         st = (e2 * d1[:, :1] - e1 * d2[:, :1]) / (2 * area_uv[:, None])
         a, b, c = (ss * ss).sum(1), (ss * st).sum(1), (st * st).sum(1)
         big = np.sqrt(0.5 * (a + c + np.sqrt((a - c) ** 2 + 4 * b * b)))
-    flat = area_uv == 0
+    # a face with no 3D area (a scan's zero-area face) has nothing to stretch: it weighs nothing
+    # in L2 and does not count in Linf, whatever its UV
+    flat, no_area = area_uv == 0, area3 == 0
     mean_sq, big = np.where(flat, np.inf, 0.5 * (a + c)), np.where(flat, np.inf, big)
+    mean_sq, big = np.where(no_area, 0, mean_sq), np.where(no_area, 0, big)
     scale = np.sqrt(np.abs(area_uv).sum() / area3.sum())
     l2 = scale * np.sqrt((area3 * mean_sq).sum() / area3.sum())
     linf = scale * big.max()
@@ -211,7 +215,8 @@ def atlas_metrics(V, F, corner_uv):
     seam = np.linalg.norm(V[v0[~joined]] - V[v1[~joined]], axis=1).sum() / np.sqrt(area3.sum())
     lo = uv.reshape(-1, 2).min(0)
     side = (uv.reshape(-1, 2).max(0) - lo).max()
-    zero = np.abs(area_uv) <= ZERO_AREA * side * side  # relative to the layout, so units do not matter
+    # relative to the layout, so units do not matter; only on faces with 3D area, which need UV area
+    zero = (np.abs(area_uv) <= ZERO_AREA * side * side) & (area3 > 0)
     pos = np.bincount(labels, ((area_uv > 0) & ~zero).astype(float))
     neg = np.bincount(labels, ((area_uv < 0) & ~zero).astype(float))
     counts = raster_counts(uv, lo, side)
@@ -242,12 +247,13 @@ def summary(name, results):
     if isinstance(uva, dict):
         text += (f"; seam {ours['seam']:.2f} <= uvatlas {uva['seam']:.2f}: {yes[ours['seam'] <= uva['seam']]}"
                  f"; uvatlas / ours seconds {uva['seconds'] / ours['seconds']:.1f}")
+    text += f"; every face written: {yes[ours['missing'] == 0]}"
     return text + f"; flips, zero-area, overlap all zero: {yes[ours['flips'] == ours['zero'] == ours['overlap'] == 0]}"
 
 
 def run_mesh(mesh, methods, args):
     """The table rows of one mesh, the metrics (or the failure text) of each method, the failures."""
-    name, V_in = os.path.basename(mesh), read_mesh(mesh)[0]
+    name, (V_in, F_in) = os.path.basename(mesh), read_mesh(mesh)
     rows, results, failed = [], {}, []
     with tempfile.TemporaryDirectory() as tmp:
         for method in methods:
@@ -256,7 +262,7 @@ def run_mesh(mesh, methods, args):
                     V, F, uv, seconds = run_ours(os.path.abspath(args.tool), mesh, shlex.split(args.tool_args), tmp)
                 else:
                     V, F, uv, seconds = run_peer(method, mesh, V_in, tmp)
-                results[method] = dict(atlas_metrics(V, F, uv), seconds=seconds)
+                results[method] = dict(atlas_metrics(V, F, uv), seconds=seconds, missing=len(F_in) - len(F))
                 row = cells(results[method])
             except ToolFailed as failure:
                 results[method] = str(failure)

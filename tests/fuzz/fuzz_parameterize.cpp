@@ -21,7 +21,9 @@
 #include <vector>
 
 #include "atlas/charts.h"
+#include "core/disk_mesh.h"
 #include "core/parameterize.h"
+#include "core/stretch.h"
 #include "generated_meshes.h"
 
 namespace {
@@ -189,7 +191,25 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
              c.vertex_stretch.size() != V.rows() || c.face_chart.size() != size_t(F.rows()) || c.charts.empty()) {
     std::abort();
   }
-  if (!r.error && (!c.input_is_disk || c.error)) std::abort();  // a disk stays a disk
+  if (!r.error && c.error) std::abort();  // a disk always gets a map (its own, or charts)
+  // Charts never come with a flipped or zero-area triangle on a face that has 3D area (as stored
+  // in float), whatever the input: non-manifold, misoriented, slivers, duplicate vertices.
+  if (!c.error) {
+    // The atlas's unit box: of the vertices that faces use.
+    std::vector<Eigen::RowVector3d> used;
+    for (Eigen::Index f = 0; f < F.rows(); ++f)
+      for (int k = 0; k < 3; ++k) used.push_back(V.row(F(f, k)));
+    Eigen::MatrixXd used_V(Eigen::Index(used.size()), 3);
+    for (size_t i = 0; i < used.size(); ++i) used_V.row(Eigen::Index(i)) = used[i];
+    const lowstretch::UnitBox box = lowstretch::unit_box(used_V);
+    Eigen::MatrixXd unit_V = V;
+    for (Eigen::Index i = 0; i < V.rows(); ++i) unit_V.row(i) = box.map(V.row(i));
+    for (Eigen::Index f = 0; f < F.rows(); ++f) {
+      const auto corner = [&](int k) { return Eigen::Vector2d(c.corner_uv(f, 2 * k), c.corner_uv(f, 2 * k + 1)); };
+      if (!(lowstretch::signed_uv_area(corner(0), corner(1), corner(2)) > 0) && !lowstretch::is_flat_face(unit_V, F, f))
+        std::abort();
+    }
+  }
   if (std::getenv("LOWSTRETCH_FUZZ_PRINT")) {
     std::printf("error %s (%s)\n", lowstretch::code_name(r.error.code), r.error ? lowstretch::message(r.error).c_str() : "");
     if (!r.error) std::printf("uv finite %d, passes %d, chosen %d\n", int(r.uv.allFinite()), int(r.passes.size()), r.chosen_pass);

@@ -179,6 +179,9 @@ def main():
     s["grid_duplicate_face"] = bytes([0, 0, 2, 2, 1, 0, 0])
     s["grid_hole"] = bytes([0, 0, 4, 3, 11, 0, 0])
     s["grid_flap"] = bytes([0, 0, 2, 5, 8, 9, 10])
+    s["grid_fin"] = bytes([0, 0, 3, 5, 7, 8, 20])  # a flap on an interior edge: three faces on it
+    s["grid_flipped_face"] = bytes([0, 0, 3, 4, 5, 0, 0])  # misoriented edges
+    s["grid_collapsed_vertex"] = bytes([0, 0, 3, 6, 7, 8, 0])  # zero-area faces, a zero-length edge
     s["grid_tiny"] = bytes([0, 0, 2, 7, 0, 0, 0])
     s["grid_huge"] = bytes([0, 0, 2, 7, 255, 0, 0])
     tri = [0, 0, 0, 8, 0, 0, 0, 8, 0]
