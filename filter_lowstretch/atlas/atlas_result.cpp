@@ -108,14 +108,6 @@ double corner_area(const Eigen::MatrixXd& corner_uv, Eigen::Index f) {
   return signed_uv_area(c(0), c(1), c(2));
 }
 
-// A face of zero 3D area (a scan's crack closed by a flat face) has no surface to texture, and
-// rounding can fold its UV triangle over its neighbours': its corners then go to one point.
-void collapse_folded_faces_of_zero_area(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, Eigen::MatrixXd& corner_uv) {
-  for (Eigen::Index f = 0; f < F.rows(); ++f)
-    if (corner_area(corner_uv, f) < 0 && is_flat_face(unit_V, F, f))
-      for (int k = 1; k < 3; ++k) corner_uv.block(f, 2 * k, 1, 2) = corner_uv.block(f, 0, 1, 2);
-}
-
 // "chart 3", "charts 1, 4, 9", "charts 1, 4, 9 and 812 more".
 std::string charts_text(const std::vector<int>& charts) {
   std::string text = charts.size() == 1 ? "chart " : "charts ";
@@ -148,7 +140,6 @@ void store(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, int vertex_r
   std::vector<char> positive(size_t(F.rows()));
   for (Eigen::Index f = 0; f < F.rows(); ++f) positive[size_t(f)] = corner_area(result.corner_uv, f) > 0;
   result.corner_uv = result.corner_uv.cast<float>().cast<double>();
-  collapse_folded_faces_of_zero_area(unit_V, F, result.corner_uv);
   const double texel = 1.0 / (4096.0 * 4096.0);
   for (Eigen::Index f = 0; f < F.rows(); ++f) {
     const double area = corner_area(result.corner_uv, f);
@@ -259,11 +250,15 @@ ChartsResult atlas_of(std::vector<SolvedChart> charts, std::vector<int> guests, 
   for (int round = 0;; ++round) {
     ChartsResult result = lay_out_and_store(charts, guests, flat, unit_V, F, unit, vertex_rows, options);
     const std::vector<int> invalid = result.error ? std::vector<int>() : invalid_faces(unit_V, F, result.corner_uv);
+    // Charts to cut in two: pieces far above the bound, and charts whose map folds a face that
+    // closes a hole (real faces then overlap near it, none of them flipped).
     std::vector<int> stretched;
-    for (size_t c = 0; c < charts.size() && !result.error; ++c)
-      if (charts[c].cut_for_validity && charts[c].faces.size() > 1 &&
-          !(result.charts[c].l2_stretch <= kPieceFarAbove * options.max_stretch))
-        stretched.push_back(int(c));
+    for (size_t c = 0; c < charts.size() && !result.error; ++c) {
+      const SolvedChart& chart = charts[c];
+      const bool far_above = chart.cut_for_validity && !(result.charts[c].l2_stretch <= kPieceFarAbove * options.max_stretch);
+      const bool folds = !chart.map.passes.empty() && chart.map.passes.at(size_t(chart.map.chosen_pass)).flipped > 0;
+      if (chart.faces.size() > 1 && (far_above || folds)) stretched.push_back(int(c));
+    }
     if ((invalid.empty() && stretched.empty()) || round == kMostRepairRounds) {
       if (cut > 0)
         result.notes.push_back(std::to_string(cut) + (cut == 1 ? " chart" : " charts") +

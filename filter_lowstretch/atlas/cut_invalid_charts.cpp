@@ -42,7 +42,9 @@ const double kLeastUvArea = 1e-11;
 std::vector<int> invalid_faces(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& corner_uv) {
   std::vector<int> invalid;
   for (Eigen::Index f = 0; f < F.rows(); ++f)
-    if (!(stored_area(corner_uv, f) > kLeastUvArea) && !is_flat_face(unit_V, F, f)) invalid.push_back(int(f));
+    // A flat face may map to zero area; folded, its neighbours overlap.
+    if (is_flat_face(unit_V, F, f) ? stored_area(corner_uv, f) < 0 : !(stored_area(corner_uv, f) > kLeastUvArea))
+      invalid.push_back(int(f));
   return invalid;
 }
 

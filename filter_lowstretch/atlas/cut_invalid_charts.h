@@ -1,6 +1,6 @@
 // The kept atlas is always valid. A chart whose map, as stored in float, still has a flipped or
 // zero-area triangle on a face with 3D area (a sliver a solve or float rounding folds, a spike's
-// tip) is cut: its invalid faces become charts of their own, the rest its connected parts, and
+// tip), or a flipped flat face, is cut: its invalid faces become charts of their own, the rest its connected parts, and
 // the charts are laid out again; a chart that stays invalid is cut into single faces, which every
 // map keeps valid.
 #pragma once
@@ -13,7 +13,8 @@
 namespace lowstretch {
 
 // The faces whose UV triangle (corner_uv, as laid out) is flipped or has (next to) zero area,
-// under 1e-11 of the texture, though the face is not flat (is_flat_face; unit_V in the unit box).
+// under 1e-11 of the texture, though the face is not flat (is_flat_face; unit_V in the unit box),
+// and the flat faces whose UV triangle is flipped (their neighbours overlap there).
 std::vector<int> invalid_faces(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& corner_uv);
 
 // Cuts the charts (face_chart: the chart of each face) that hold `invalid` faces, each into its

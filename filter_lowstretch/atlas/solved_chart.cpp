@@ -110,7 +110,7 @@ Error make_chart_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
 ChartPass measure_real_faces(const ChartMesh& chart, const Eigen::MatrixXd& uv) {
   const Eigen::Index real = Eigen::Index(chart.input_face.size());
   const FaceStretch s = face_stretch(chart.V, chart.F.topRows(real), uv);
-  return {s.area_3d.sum(), l2_stretch(s), s.flipped, s.degenerate};
+  return {s.area_3d.sum(), l2_stretch(s), s.flipped, s.degenerate, l2_stretch(s, true)};
 }
 
 double texture_cost(const SolvedChart& chart) {

@@ -37,8 +37,9 @@ Error make_chart_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
 struct ChartPass {
   double area_3d = 0, l2_stretch = 0;
   int flipped = 0, degenerate = 0;
+  double l2_of_valid = 0;  // over the faces that are neither flipped nor degenerate
 };
-inline ChartPass as_chart_pass(const PassMetrics& p) { return {0, p.l2_stretch, p.flipped, p.degenerate}; }
+inline ChartPass as_chart_pass(const PassMetrics& p) { return {0, p.l2_stretch, p.flipped, p.degenerate, p.l2_stretch}; }
 ChartPass measure_real_faces(const ChartMesh& chart, const Eigen::MatrixXd& uv);
 
 // One chart: its mesh, the method's map of it onto a rectangle and that map's passes measured

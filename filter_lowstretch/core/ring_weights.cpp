@@ -8,6 +8,10 @@ namespace lowstretch {
 namespace {
 
 const double kPi = 3.14159265358979323846;
+// A ring angle this close to pi makes the ring degenerate: the vertex sits on the line between
+// two neighbours (a scan's T-junction, a sliver's tip), where Floater's and the mean value weights
+// give the other neighbours next to nothing and the faces beside that line collapse in UV.
+const double kStraightAngle = kPi - 1e-8;
 
 // Angle between two vectors, robust near 0 and pi.
 double angle(const Eigen::RowVector3d& a, const Eigen::RowVector3d& b) {
@@ -41,10 +45,10 @@ bool floater_weights(const Eigen::RowVector3d& p, const std::vector<Eigen::RowVe
   std::vector<Eigen::Vector2d> q(static_cast<size_t>(d));
   for (int k = 0; k < d; ++k) {
     phi[size_t(k)] *= 2 * kPi / total;
-    if (k > 0 && phi[size_t(k)] - phi[size_t(k) - 1] >= kPi) return false;  // p not inside the flat ring
+    if (k > 0 && phi[size_t(k)] - phi[size_t(k) - 1] >= kStraightAngle) return false;  // p not inside the flat ring
     q[size_t(k)] = length[size_t(k)] * Eigen::Vector2d(std::cos(phi[size_t(k)]), std::sin(phi[size_t(k)]));
   }
-  if (2 * kPi - phi[size_t(d) - 1] >= kPi) return false;
+  if (2 * kPi - phi[size_t(d) - 1] >= kStraightAngle) return false;
 
   std::vector<double> lambda(size_t(d), 0.0);
   for (int k = 0; k < d; ++k) {
@@ -79,7 +83,7 @@ bool mean_value_weights(const Eigen::RowVector3d& p, const std::vector<Eigen::Ro
   std::vector<double> half_tan(static_cast<size_t>(d)), w(static_cast<size_t>(d));
   for (int k = 0; k < d; ++k) {
     const double a = angle(ring[size_t(k)] - p, ring[size_t((k + 1) % d)] - p);
-    if (!(a > 0 && a < kPi)) return false;
+    if (!(a > 0 && a < kStraightAngle)) return false;
     half_tan[size_t(k)] = std::tan(a / 2);
   }
   for (int k = 0; k < d; ++k) {

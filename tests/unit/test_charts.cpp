@@ -156,13 +156,13 @@ TEST(Charts, MetricsAreThoseOfTheCoordinatesAsStored) {
 }
 
 TEST(Charts, TrianglesThatFloatRoundingCollapsesAreCountedAndNoted) {
-  // A unit square with its centre vertex 1e-12 above the bottom side: the bottom triangle is
-  // thin but positive in double; every map keeps the flat square, and in float (the centre's v
-  // rounds onto the gutter line of the two bottom corners) the triangle has zero area.
-  Eigen::MatrixXd V(5, 3);
-  V << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 1e-12, 0;
-  Eigen::MatrixXi F(4, 3);
-  F << 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4;
+  // A unit square with two interior vertices 1e-9 apart at its centre: the two triangles between
+  // them are tiny but positive in double; every map keeps the flat square, and in float (both
+  // vertices round to one point) they have zero area.
+  Eigen::MatrixXd V(6, 3);
+  V << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 0.5, 0, 0.5 + 1e-9, 0.5, 0;
+  Eigen::MatrixXi F(6, 3);
+  F << 0, 1, 4, 1, 5, 4, 1, 2, 5, 2, 4, 5, 2, 3, 4, 3, 0, 4;
   ChartOptions disk_only;
   disk_only.non_disk = NonDisk::Reject;
   const ChartsResult r = parameterize_charts(V, F, disk_only);
@@ -170,18 +170,20 @@ TEST(Charts, TrianglesThatFloatRoundingCollapsesAreCountedAndNoted) {
   ASSERT_TRUE(r.input_is_disk);
   const PassMetrics& kept = r.disk_passes[size_t(r.chosen_pass)];
   EXPECT_EQ(kept.flipped + kept.degenerate, 0);  // in double
-  EXPECT_EQ(r.float_collapsed, 1);
-  EXPECT_EQ(r.layout.flipped + r.layout.degenerate, 1);  // as stored
+  EXPECT_EQ(r.float_collapsed, 2);
+  EXPECT_EQ(r.layout.flipped + r.layout.degenerate, 2);  // as stored
   EXPECT_GE(r.subtexel_triangles, 1);
   EXPECT_TRUE(std::any_of(r.notes.begin(), r.notes.end(),
                           [](const std::string& n) { return n.find("rounded to float") != std::string::npos; }));
-  // By default that disk gets charts instead: the thin triangle apart, mapped fatter, so that
-  // float keeps it, and every triangle positive as stored.
+  // By default that disk gets charts instead: the tiny triangles apart, each in a cell of its own
+  // that float can hold, and every triangle positive as stored.
   const ChartsResult atlas = parameterize_charts(V, F, ChartOptions());
   EXPECT_FALSE(atlas.input_is_disk);
   expect_valid_layout(F, atlas);
   EXPECT_EQ(atlas.float_collapsed, 0);
-  EXPECT_GT(texture_efficiency(atlas), 0.9);
+  for (const int tiny : {1, 3})
+    for (int f = 0; f < 6; ++f)
+      if (f != tiny) EXPECT_NE(atlas.face_chart[size_t(f)], atlas.face_chart[size_t(tiny)]) << f << " " << tiny;
 }
 
 TEST(Charts, GutterIsCountedInTexelsOfTheStatedTexture) {

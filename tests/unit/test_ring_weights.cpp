@@ -88,3 +88,18 @@ TEST(RingWeights, DegenerateRingIsRefused) {
   EXPECT_FALSE(floater_weights(Eigen::RowVector3d::Zero(), ring, w));
   EXPECT_FALSE(mean_value_weights(Eigen::RowVector3d::Zero(), ring, w));
 }
+
+TEST(RingWeights, AVertexOnTheLineBetweenTwoNeighboursHasADegenerateRing) {
+  // A T-junction: p at the midpoint of a-b (up to rounding), c on one side. Floater's and the mean
+  // value weights would give c next to nothing and collapse the face (a, b, p) in UV; the ring is
+  // called degenerate (the caller then uses uniform weights). Slightly off the line it is not.
+  const Eigen::RowVector3d a(0, 0, 0), b(1, 0, 0), c(0.5, 0.7, 0);
+  std::vector<double> w;
+  for (const double off : {0.0, 1e-13})
+    for (const WeightFunction f : {WeightFunction(floater_weights), WeightFunction(mean_value_weights)})
+      EXPECT_FALSE(f(Eigen::RowVector3d(0.5, -off, 0), {a, b, c}, w)) << off;
+  for (const WeightFunction f : {WeightFunction(floater_weights), WeightFunction(mean_value_weights)}) {
+    ASSERT_TRUE(f(Eigen::RowVector3d(0.5, 0.01, 0), {a, b, c}, w));
+    EXPECT_GT(w[2], 0.005);
+  }
+}
