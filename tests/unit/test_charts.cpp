@@ -533,3 +533,52 @@ TEST(Charts, ZeroLengthBoundaryEdgeKeepsItsTriangleInFloat) {
     EXPECT_EQ(r.layout.degenerate, 0) << to_string(shape);  // measured on the UV rounded to float
   }
 }
+
+TEST(Charts, AScanWithEveryDefectAtOnceGetsAValidAtlas) {
+  // A closed sphere given what reconstructions leave: a fin, a T-junction closed by a flat face,
+  // a vertex duplicated under one face, a face naming a vertex twice, and dust (a tiny
+  // tetrahedron and a flat triangle apart).
+  testmesh::Mesh m = testmesh::sphere(10, 16);
+  const auto add_vertex = [&m](const Eigen::RowVector3d& p) {
+    m.V.conservativeResize(m.V.rows() + 1, 3);
+    m.V.bottomRows(1) = p;
+    return int(m.V.rows()) - 1;
+  };
+  const auto add_face = [&m](int a, int b, int c) {
+    m.F.conservativeResize(m.F.rows() + 1, 3);
+    m.F.bottomRows(1) << a, b, c;
+  };
+  const Eigen::Index sphere_faces = m.F.rows();
+  // The fin: a third face on face 0's first edge.
+  add_face(m.F(0, 1), m.F(0, 0), add_vertex(m.V.row(m.F(0, 2)) * 1.5));
+  // The T-junction: face 40 (a, b, c) becomes (a, t, c), (t, b, c) and the flat (a, b, t).
+  const int a = m.F(40, 0), b = m.F(40, 1), c = m.F(40, 2);
+  const int t = add_vertex((m.V.row(a) + m.V.row(b)) / 2);
+  m.F.row(40) << a, t, c;
+  add_face(t, b, c);
+  add_face(a, b, t);
+  // A duplicate: face 80's first vertex copied, the face moved onto the copy.
+  m.F(80, 0) = add_vertex(m.V.row(m.F(80, 0)));
+  add_face(m.F(90, 0), m.F(90, 0), m.F(90, 1));
+  // Dust.
+  const int d = add_vertex(Eigen::RowVector3d(3, 3, 3));
+  for (const Eigen::RowVector3d& p : {Eigen::RowVector3d(3.01, 3, 3), Eigen::RowVector3d(3, 3.01, 3), Eigen::RowVector3d(3, 3, 3.01)})
+    add_vertex(p);
+  add_face(d, d + 2, d + 1);
+  add_face(d, d + 1, d + 3);
+  add_face(d, d + 3, d + 2);
+  add_face(d + 1, d + 2, d + 3);
+  const int e = add_vertex(Eigen::RowVector3d(-3, 0, 0));
+  add_vertex(Eigen::RowVector3d(-2, 0, 0));
+  add_vertex(Eigen::RowVector3d(-1.5, 0, 0));
+  add_face(e, e + 1, e + 2);
+
+  EXPECT_EQ(charts_of(m, NonDisk::Reject).error.code, ErrorCode::RepeatedVertexInFace);
+  const testmesh::Mesh before = m;
+  const ChartsResult r = charts_of(m);
+  expect_valid_layout(m.F, r, &m.V);
+  EXPECT_TRUE(m.F == before.F && m.V == before.V) << "the input is not changed";
+  EXPECT_EQ(r.vertex_stretch.rows(), m.V.rows());
+  EXPECT_LE(r.charts.size(), 12u) << "the sphere's few charts and the dust's, not one chart per face";
+  EXPECT_GT(m.F.rows(), sphere_faces);
+}
