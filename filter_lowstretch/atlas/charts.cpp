@@ -323,20 +323,19 @@ bool is_unwelded(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
 
 // What the manifold copy changed, one note per kind of defect.
 std::vector<std::string> split_notes(const SplitFans& split) {
-  const std::string unchanged = " for the charts; the mesh is unchanged";
+  struct Defect {
+    int count;
+    const char *one, *many, *done;
+  };
+  const Defect defects[] = {
+      {split.non_manifold_edges, "non-manifold edge", "non-manifold edges", " (shared by more than two faces) cut open"},
+      {split.misoriented_edges, "edge", "edges", " between faces of opposite orientation cut open"},
+      {split.repeated_vertex_faces, "face names", "faces name", " a vertex twice (zero area): given corners of their own"},
+      {split.split_vertices, "non-manifold vertex", "non-manifold vertices",
+       " (where parts, holes or cut edges touch) split per fan of faces"}};
   std::vector<std::string> notes;
-  if (split.non_manifold_edges > 0)
-    notes.push_back(count_text(split.non_manifold_edges, "non-manifold edge", "non-manifold edges") +
-                    " (shared by more than two faces) cut open" + unchanged);
-  if (split.misoriented_edges > 0)
-    notes.push_back(count_text(split.misoriented_edges, "edge", "edges") +
-                    " between faces of opposite orientation cut open" + unchanged);
-  if (split.repeated_vertex_faces > 0)
-    notes.push_back(count_text(split.repeated_vertex_faces, "face names", "faces name") +
-                    " a vertex twice (zero area): given corners of their own" + unchanged);
-  if (split.split_vertices > 0)
-    notes.push_back(count_text(split.split_vertices, "non-manifold vertex", "non-manifold vertices") +
-                    " (where parts, holes or cut edges touch) split per fan of faces" + unchanged);
+  for (const Defect& d : defects)
+    if (d.count > 0) notes.push_back(count_text(d.count, d.one, d.many) + d.done + " for the charts; the mesh is unchanged");
   return notes;
 }
 

@@ -174,9 +174,7 @@ def dust(vertices, faces, count, seed):
     """count tiny parts, each near a random vertex: closed tetrahedra and open fans of three
     triangles, in turn, about 0.002 of the mesh's size."""
     rng = random.Random(seed)
-    lo = [min(v[k] for v in vertices) for k in range(3)]
-    hi = [max(v[k] for v in vertices) for k in range(3)]
-    size = 0.002 * max(h - l for h, l in zip(hi, lo))
+    size = 0.002 * max(max(v[k] for v in vertices) - min(v[k] for v in vertices) for k in range(3))
     out, out_faces = [v[:] for v in vertices], [t[:] for t in faces]
     for n in range(count):
         near = rng.choice(vertices)

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""What is wrong with a mesh, the counts that ../shared/reference/atlas_peers.md gives for real scans:
+"""What is wrong with a mesh, in the counts that describe real range scans:
 vertices, faces, unreferenced vertices, parts (faces joined by a shared vertex index), faces of
 exactly zero area and under 1e-3 of the median area, vertices at a position an earlier vertex
 already has, non-manifold edges (three or more faces) and vertices (more than one fan of faces, or

@@ -1,12 +1,16 @@
 #!/usr/bin/env python3
-"""Scan defects get a valid atlas with the tool's default options: tests/bench/make_defects.py puts
-fins (non-manifold edges), zero-area slivers, duplicate vertices, dust, holes and collapsed edges
-into a closed mesh, and for each file `lowstretch FILE -o out.obj --json` must exit 0, write every
-input face with texture coordinates inside the gutter, and leave no flipped UV triangle and no
-zero-area one on a face with 3D area (a face of zero 3D area may have zero UV area, never a
-negative one), as read back from the OBJ; the triangle soup is refused with the weld message.
+"""Scans get a valid atlas with the tool's default options. `defects`: tests/bench/make_defects.py
+puts fins (non-manifold edges), zero-area slivers, duplicate vertices, dust, holes and collapsed
+edges into a closed mesh; `reconstructions`: tests/bench/make_reconstructions.py makes MeshLab's
+ball pivoting, VCG and screened Poisson reconstructions and marching cubes on a quantized signed
+distance of it (run by --python, a Python with its packages). For each file
+`lowstretch FILE -o out.obj --json` must exit 0, write every input face with texture coordinates
+inside the gutter, and leave no flipped UV triangle and no zero-area one on a face with 3D area (a
+face of zero 3D area may have zero UV area, never a negative one), as read back from the OBJ; the
+triangle soup of `defects` is refused with the weld message.
 
-  scan_atlas.py --tool lowstretch --mesh CLOSED.off --work DIR
+  scan_atlas.py defects --tool lowstretch --mesh CLOSED.off --work DIR
+  scan_atlas.py reconstructions --python VENV/bin/python --tool lowstretch --mesh MESH.off --work DIR
 """
 import argparse
 import json
@@ -23,6 +27,7 @@ from e2e import Checks  # noqa: E402
 GUTTER = 2 / 1024  # the default gutter over the default texture size
 ZERO_AREA = 1e-12  # of the layout's square, as tests/bench/atlas_table.py counts zero-area triangles
 DEFECTS = ["fins", "slivers", "duplicates", "dust", "collapsed", "dropouts", "holes200", "all"]
+RECONSTRUCTIONS = ["ball_pivoting", "vcg", "poisson", "sdf_mc"]
 
 
 def area3(p, q, r):
@@ -66,19 +71,26 @@ def check_atlas(check, tool, path, work):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("scans", choices=("defects", "reconstructions"))
     parser.add_argument("--tool", required=True)
-    parser.add_argument("--mesh", required=True, help="a closed, clean OFF mesh to put the defects into")
+    parser.add_argument("--mesh", required=True, help="a closed, clean OFF mesh to make the scans of")
     parser.add_argument("--work", required=True)
+    parser.add_argument("--python", default=sys.executable, help="reconstructions: a Python with numpy, pymeshlab, "
+                        "scikit-image")
     args = parser.parse_args()
     shutil.rmtree(args.work, ignore_errors=True)
     os.makedirs(args.work)
     check = Checks()
-    made = subprocess.run([sys.executable, os.path.join(here, "..", "bench", "make_defects.py"), args.mesh, args.work],
+    script, names = {"defects": ("make_defects.py", DEFECTS), "reconstructions": ("make_reconstructions.py", RECONSTRUCTIONS)}[args.scans]
+    made = subprocess.run([args.python, os.path.join(here, "..", "bench", script), args.mesh, args.work],
                           capture_output=True, text=True)
-    if not check(made.returncode == 0, f"make_defects.py writes the defective meshes ({made.stderr.strip()[-200:]})"):
+    if not check(made.returncode == 0, f"{script} writes the meshes ({made.stderr.strip()[-300:]})"):
         sys.exit(1)
-    for defect in DEFECTS:
-        check_atlas(check, args.tool, os.path.join(args.work, defect + ".off"), args.work)
+    for name in names:
+        check_atlas(check, args.tool, os.path.join(args.work, name + ".off"), args.work)
+    if args.scans == "reconstructions":
+        print(f"scan_atlas: {len(check.failed)} check(s) failed")
+        sys.exit(1 if check.failed else 0)
     soup = subprocess.run([args.tool, os.path.join(args.work, "soup.off"), "-o", os.path.join(args.work, "soup.obj")],
                           capture_output=True, text=True, timeout=900)
     check(soup.returncode == 3 and "not welded" in soup.stderr and not os.path.exists(os.path.join(args.work, "soup.obj")),
