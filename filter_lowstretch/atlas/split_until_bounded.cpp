@@ -196,10 +196,14 @@ Options deciding_options(Options deciding) {
 }
 
 // A chart of fewer than 2 x kSmallestChart faces stays whole unless it stretches more than
-// kSmallCutAbove times the bound and has kSmallestCutChart faces or more (charts.h).
+// kSmallCutAbove times the bound and has kSmallestCutChart faces or more (charts.h), or has two
+// faces or more and stretches more than kTinyCutAbove times the bound: no chart is too small to
+// cut, a single triangle maps without stretch (a scan's handle of 7 faces kept L2 380).
+const double kTinyCutAbove = 8;
 bool too_small_to_cut(const SolvedChart& chart, double max_stretch) {
   const int faces = int(chart.faces.size());
   if (faces >= 2 * kSmallestChart) return false;
+  if (faces >= 2 && !(chart.kept.l2_stretch <= kTinyCutAbove * max_stretch)) return false;
   return faces < kSmallestCutChart || chart.kept.l2_stretch <= kSmallCutAbove * max_stretch;
 }
 

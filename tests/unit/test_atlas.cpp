@@ -541,3 +541,20 @@ TEST(Atlas, ChartsOfAnyShapeGoIntoEmptyTexelsByTheirOutline) {
   EXPECT_GT(holed_inside_top, 0);
   EXPECT_GE(least_distance_between_charts(m.F, r), ChartOptions().gutter / ChartOptions().texture_size * (1 - 1e-6));
 }
+
+TEST(Atlas, NoChartIsTooSmallToCutWhenFarAboveTheBound) {
+  // An open cone of six faces, 400 times taller than wide: one chart of it has L2 stretch 16 on
+  // its square, far above eight times the bound; a single face maps without stretch, so it is cut.
+  testmesh::Mesh cone;
+  cone.V.resize(7, 3);
+  cone.F.resize(6, 3);
+  for (int k = 0; k < 6; ++k) {
+    cone.V.row(k) << std::cos(k * M_PI / 3), std::sin(k * M_PI / 3), 0;
+    cone.F.row(k) << k, (k + 1) % 6, 6;
+  }
+  cone.V.row(6) << 0, 0, 400;
+  const ChartsResult r = atlas_of(cone);
+  expect_valid_layout(cone.F, r);
+  EXPECT_GE(r.charts.size(), 2u);
+  for (const Chart& c : r.charts) EXPECT_LE(c.l2_stretch, 8 * ChartOptions().max_stretch);
+}
