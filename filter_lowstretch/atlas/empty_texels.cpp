@@ -246,6 +246,10 @@ std::vector<int> put_in_empty_texels(const std::vector<SolvedChart>& charts, con
       continue;
     }
     const Eigen::Vector2d size = chart.box.sizes() * std::sqrt(density * chart.kept.area_3d / own);  // in cells
+    if (!(size.maxCoeff() <= grid.side())) {  // a sliver longer than the texture (or a degenerate map): no room
+      unplaced.push_back(g);
+      continue;
+    }
     Outline best;
     int best_x = 0, best_y = 0;
     bool found = false;

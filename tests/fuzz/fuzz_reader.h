@@ -1,6 +1,7 @@
 // Shared body of the reader fuzz targets: the input bytes become a file with the target's
 // extension, which goes through the tool's path: read_mesh (picks the reader by extension),
-// mesh_to_arrays, parameterize_charts (a disk, 2 passes) and, when that succeeds, write_parameterization.
+// mesh_to_arrays, parameterize_charts (the default options, 2 passes: a disk's map, or charts of any
+// other mesh) and, when that succeeds, write_parameterization.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -57,7 +58,8 @@ inline void read_and_parameterize(const char* extension, const uint8_t* data, si
     if (lowstretch::message(result.error).empty()) std::abort();
     return;
   }
-  if (result.corner_uv.rows() != F.rows() || result.face_stretch.size() != F.rows() || result.disk_passes.empty())
+  if (result.corner_uv.rows() != F.rows() || result.face_stretch.size() != F.rows() ||
+      (result.input_is_disk && result.disk_passes.empty()))
     std::abort();
   lowstretch::write_parameterization(mesh, rows, result);
 }

@@ -558,3 +558,22 @@ TEST(Atlas, NoChartIsTooSmallToCutWhenFarAboveTheBound) {
   EXPECT_GE(r.charts.size(), 2u);
   for (const Chart& c : r.charts) EXPECT_LE(c.l2_stretch, 8 * ChartOptions().max_stretch);
 }
+
+TEST(Atlas, AVertexFarAwayGivesNoGuestLargerThanTheTexture) {
+  // A fuzzed 3 x 3 quad grid (fanned, as the OFF reader read it) with one vertex 4e9 away and a
+  // quad naming a vertex twice: slivers billions of texels long, which once asked the
+  // empty-texel placer for a grid of that size (an int overflow and a huge allocation).
+  Eigen::MatrixXd V(16, 3);
+  V << 0, 0, 0, 0.333333, 0, 0.168294, 0.666667, 0, 0.181859, 1, 0, 0.028224, 0, 0.333333, 0, 0.333333, 0.3, 0.13226,
+      0.666667, 0.333333, 0.142921, 1, 0.333333, 0.0221809, 0, 0.666667, 0, 0.333333, 0.666667, 0.0395891,
+      4294967295.666667, 0.666667, 0.0427802, 1, 0.666667, 0.00663935, 0, 1, -0.0, 0.333333, 1, -0.0700351, 0.666667, 1,
+      -0.0756802, 1, 1, -0.0117453;
+  Eigen::MatrixXi F(18, 3);
+  F << 0, 1, 5, 0, 5, 4, 1, 2, 6, 1, 6, 5, 3, 3, 7, 3, 7, 6, 4, 5, 9, 4, 9, 8, 5, 6, 10, 5, 10, 9, 6, 7, 11, 6, 11, 10, 8, 9,
+      13, 8, 13, 12, 9, 10, 14, 9, 14, 13, 10, 11, 15, 10, 15, 14;
+  const ChartsResult r = parameterize_charts(V, F, ChartOptions());
+  ASSERT_FALSE(r.error) << message(r.error);
+  EXPECT_EQ(r.corner_uv.rows(), F.rows());
+  EXPECT_TRUE(r.corner_uv.allFinite());
+  EXPECT_EQ(r.layout.flipped, 0);
+}
