@@ -397,18 +397,23 @@ ChartsResult disk_or_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, c
   // A disk keeps the paper's single chart, unless it has flipped or zero-area triangles as stored
   // (or, for Atlas, stretches more than the bound) and an atlas uses the texture better.
   ChartsResult disk;
+  double unit = 1;
+  const Eigen::MatrixXd unit_V = is_disk ? unit_box_of_used(V, F, unit) : Eigen::MatrixXd();
+  const auto valid = [&](const ChartsResult& r) { return !r.error && invalid_faces(unit_V, F, r.corner_uv).empty(); };
+  bool disk_valid = false;
   if (is_disk) {
     disk = disk_result();
-    double unit = 1;
-    const bool valid = invalid_faces(unit_box_of_used(V, F, unit), F, disk.corner_uv).empty();
+    disk_valid = valid(disk);
     const bool try_atlas = options.non_disk == NonDisk::Atlas
-                               ? !valid || needs_split(as_chart_pass(disk.disk_passes.at(size_t(disk.chosen_pass))), options.max_stretch)
-                               : options.non_disk == NonDisk::Charts && !valid;
+                               ? !disk_valid || needs_split(as_chart_pass(disk.disk_passes.at(size_t(disk.chosen_pass))), options.max_stretch)
+                               : options.non_disk == NonDisk::Charts && !disk_valid;
     if (!try_atlas) return disk;
   }
   const OneBlasThread one_blas_thread;  // both cores go to the charts
   ChartsResult atlas = make_atlas(V, F, options);
-  if (is_disk && (atlas.error || !more_efficient(atlas, disk))) {
+  // A valid map wins over an invalid one, whatever their efficiency.
+  const bool atlas_valid = is_disk && valid(atlas);
+  if (is_disk && (atlas.error || (disk_valid != atlas_valid ? disk_valid : !more_efficient(atlas, disk)))) {
     if (!atlas.error)
       disk.notes.push_back("the disk stays one chart: cut into " + std::to_string(atlas.charts.size()) +
                            " charts it had efficiency " + number_text(texture_efficiency(atlas)) + " (coverage / L2^2) against " +
