@@ -54,6 +54,7 @@ void cut_invalid_charts(std::vector<SolvedChart>& charts, std::vector<int>& gues
                         std::vector<int>& flat) {
   std::vector<char> taken(size_t(F.rows()), 0), cut(charts.size(), 0), split(charts.size(), 0);
   for (const int f : invalid) {
+    if (face_chart[size_t(f)] >= int(charts.size())) continue;  // a face already left alone, on its point
     taken[size_t(f)] = 1;
     cut[size_t(face_chart[size_t(f)])] = 1;
   }
