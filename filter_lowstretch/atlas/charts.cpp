@@ -345,12 +345,11 @@ ChartsResult disk_or_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, c
   const Clock::time_point start = Clock::now();
   Result whole = parameterize(V, F, options.disk);
   if (own_copies && whole.error.code == ErrorCode::UnweldedVertices) whole.error = {ErrorCode::SeveralComponents, 0, ""};
-  const auto disk_result = [&]() {
+  const auto disk_result = [&](const Eigen::MatrixXd& unit_V) {
     ChartsResult result = from_disk(F, std::move(whole));
-    double unit = 1;
     std::vector<int> all(static_cast<size_t>(F.rows()));
     for (Eigen::Index f = 0; f < F.rows(); ++f) all[size_t(f)] = int(f);
-    store(unit_box_of_used(V, F, unit), F, int(V.rows()), {all}, options, result);
+    store(unit_V, F, int(V.rows()), {all}, options, result);
     // The layout is the kept pass, as stored: its number, timings and solver stay.
     const PassMetrics measured = result.layout;
     result.layout = result.disk_passes.at(size_t(result.chosen_pass));
@@ -402,7 +401,7 @@ ChartsResult disk_or_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, c
   const auto valid = [&](const ChartsResult& r) { return !r.error && invalid_faces(unit_V, F, r.corner_uv).empty(); };
   bool disk_valid = false;
   if (is_disk) {
-    disk = disk_result();
+    disk = disk_result(unit_V);
     disk_valid = valid(disk);
     const bool try_atlas = options.non_disk == NonDisk::Atlas
                                ? !disk_valid || needs_split(as_chart_pass(disk.disk_passes.at(size_t(disk.chosen_pass))), options.max_stretch)
