@@ -1,4 +1,4 @@
-#include "charts.h"
+#include "atlas/charts.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -8,20 +8,19 @@
 #include <string>
 #include <utility>
 
-#include "atlas_result.h"
-#include "cut_invalid_charts.h"
-#include "disk_mesh.h"
-#include "empty_texels.h"
-#include "free_charts.h"
-#include "lay_out_charts.h"
-#include "mesh_components.h"
-#include "one_blas_thread.h"
-#include "sharp_patches.h"
-#include "solved_chart.h"
-#include "split_until_bounded.h"
-#include "split_vertex_fans.h"
-#include "stretch.h"
-#include "zero_area_parts.h"
+#include "atlas/measure/atlas_result.h"
+#include "atlas/bound/cut_invalid_charts.h"
+#include "core/disk_mesh.h"
+#include "atlas/pack/empty_texels.h"
+#include "atlas/chart_map/free_charts.h"
+#include "atlas/pack/lay_out_charts.h"
+#include "atlas/cut/mesh_components.h"
+#include "atlas/cut/sharp_patches.h"
+#include "atlas/chart_map/solved_chart.h"
+#include "atlas/bound/split_until_bounded.h"
+#include "atlas/cut/split_vertex_fans.h"
+#include "core/stretch.h"
+#include "atlas/cut/zero_area_parts.h"
 
 namespace lowstretch {
 
@@ -408,7 +407,6 @@ ChartsResult disk_or_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, c
                                : options.non_disk == NonDisk::Charts && !disk_valid;
     if (!try_atlas) return disk;
   }
-  const OneBlasThread one_blas_thread;  // both cores go to the charts
   ChartsResult atlas = make_atlas(V, F, options);
   // A valid map wins over an invalid one, whatever their efficiency.
   const bool atlas_valid = is_disk && valid(atlas);

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "parameterize.h"
+#include "core/parameterize.h"
 
 namespace lowstretch {
 

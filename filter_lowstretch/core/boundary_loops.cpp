@@ -1,6 +1,6 @@
-#include "boundary_loops.h"
+#include "core/boundary_loops.h"
 
-#include "half_edges.h"
+#include "core/half_edges.h"
 
 namespace lowstretch {
 

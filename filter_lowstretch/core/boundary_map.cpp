@@ -1,4 +1,4 @@
-#include "boundary_map.h"
+#include "core/boundary_map.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 #include <array>
 #include <vector>
 
-#include "disk_mesh.h"
+#include "core/disk_mesh.h"
 
 namespace lowstretch {
 

@@ -1,4 +1,4 @@
-#include "disk_mesh.h"
+#include "core/disk_mesh.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -7,9 +7,9 @@
 #include <numeric>
 #include <tuple>
 
-#include "boundary_loops.h"
-#include "half_edges.h"
-#include "union_find.h"
+#include "core/boundary_loops.h"
+#include "core/half_edges.h"
+#include "core/union_find.h"
 
 namespace lowstretch {
 

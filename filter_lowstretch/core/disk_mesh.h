@@ -3,7 +3,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "error.h"
+#include "core/errors.h"
 
 namespace lowstretch {
 

@@ -1,10 +1,10 @@
-#include "half_edges.h"
+#include "core/half_edges.h"
 
 #include <algorithm>
 #include <cstdint>
 #include <utility>
 
-#include "union_find.h"
+#include "core/union_find.h"
 
 namespace lowstretch {
 

@@ -1,4 +1,4 @@
-#include "laplacian_solver.h"
+#include "core/laplacian_solver.h"
 
 #include <algorithm>
 #include <chrono>

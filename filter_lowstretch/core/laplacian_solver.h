@@ -18,8 +18,8 @@
 #include <Eigen/UmfPackSupport>
 #include <vector>
 
-#include "disk_mesh.h"
-#include "solver_options.h"
+#include "core/disk_mesh.h"
+#include "core/solver_options.h"
 
 namespace lowstretch {
 

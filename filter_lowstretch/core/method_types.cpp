@@ -1,4 +1,4 @@
-#include "method_types.h"
+#include "core/method_types.h"
 
 namespace lowstretch {
 

@@ -2,7 +2,7 @@
 // run stopped, and the metrics of one pass. At the bottom of the core: includes nothing of it.
 #pragma once
 
-#include "solver_options.h"
+#include "core/solver_options.h"
 
 namespace lowstretch {
 

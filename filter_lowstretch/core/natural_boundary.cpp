@@ -1,4 +1,4 @@
-#include "natural_boundary.h"
+#include "core/natural_boundary.h"
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/Geometry>

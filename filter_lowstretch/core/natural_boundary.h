@@ -3,8 +3,8 @@
 #pragma once
 #include <Eigen/Core>
 
-#include "disk_mesh.h"
-#include "error.h"
+#include "core/disk_mesh.h"
+#include "core/errors.h"
 
 namespace lowstretch {
 

@@ -1,18 +1,18 @@
-#include "parameterize.h"
+#include "core/parameterize.h"
 
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <utility>
 
-#include "boundary_map.h"
-#include "disk_mesh.h"
-#include "laplacian_solver.h"
-#include "natural_boundary.h"
-#include "refine_stretch.h"
-#include "ring_weights.h"
-#include "square_corners.h"
-#include "stretch.h"
+#include "core/boundary_map.h"
+#include "core/disk_mesh.h"
+#include "core/laplacian_solver.h"
+#include "core/natural_boundary.h"
+#include "core/refine_stretch.h"
+#include "core/ring_weights.h"
+#include "core/square_corners.h"
+#include "core/stretch.h"
 
 namespace lowstretch {
 

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "error.h"
-#include "method_types.h"
+#include "core/errors.h"
+#include "core/method_types.h"
 
 namespace lowstretch {
 

@@ -1,4 +1,4 @@
-#include "refine_stretch.h"
+#include "core/refine_stretch.h"
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
@@ -12,7 +12,7 @@
 #include <limits>
 #include <vector>
 
-#include "stretch.h"
+#include "core/stretch.h"
 
 namespace lowstretch {
 

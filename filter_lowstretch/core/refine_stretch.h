@@ -9,7 +9,7 @@
 #pragma once
 #include <Eigen/Core>
 
-#include "disk_mesh.h"
+#include "core/disk_mesh.h"
 
 namespace lowstretch {
 

@@ -1,4 +1,4 @@
-#include "ring_weights.h"
+#include "core/ring_weights.h"
 
 #include <Eigen/Geometry>
 #include <cmath>

@@ -4,8 +4,8 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "disk_mesh.h"
-#include "method_types.h"
+#include "core/disk_mesh.h"
+#include "core/method_types.h"
 
 namespace lowstretch {
 

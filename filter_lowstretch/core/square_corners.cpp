@@ -1,4 +1,4 @@
-#include "square_corners.h"
+#include "core/square_corners.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -6,7 +6,7 @@
 #include <limits>
 #include <vector>
 
-#include "boundary_map.h"
+#include "core/boundary_map.h"
 
 namespace lowstretch {
 

@@ -3,7 +3,7 @@
 #include <array>
 #include <vector>
 
-#include "disk_mesh.h"
+#include "core/disk_mesh.h"
 
 namespace lowstretch {
 

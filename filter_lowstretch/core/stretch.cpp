@@ -1,4 +1,4 @@
-#include "stretch.h"
+#include "core/stretch.h"
 
 #include <Eigen/Geometry>
 #include <cmath>

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <vector>
 
-#include "method_types.h"
+#include "core/method_types.h"
 
 namespace lowstretch {
 

@@ -1,6 +1,6 @@
-#include "filter_lowstretch.h"
+#include "meshlab2020/filter_lowstretch.h"
 
-#include "filter_lowstretch/plugin_common/lowstretch_filter.h"
+#include "plugin_common/lowstretch_filter.h"
 
 namespace plugin = lowstretch::plugin;
 

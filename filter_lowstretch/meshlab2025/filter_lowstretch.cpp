@@ -1,10 +1,10 @@
-#include "filter_lowstretch.h"
+#include "meshlab2025/filter_lowstretch.h"
 
 #include <QImage>
 
 #include <common/mlexception.h>
 
-#include "filter_lowstretch/plugin_common/lowstretch_filter.h"
+#include "plugin_common/lowstretch_filter.h"
 
 namespace plugin = lowstretch::plugin;
 

@@ -1,4 +1,4 @@
-#include "lowstretch_filter.h"
+#include "plugin_common/lowstretch_filter.h"
 
 #include <dlfcn.h>
 

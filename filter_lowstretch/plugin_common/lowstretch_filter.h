@@ -13,11 +13,11 @@
 #include <string>
 #include <vector>
 
-#include "filter_lowstretch/atlas/charts.h"
-#include "filter_lowstretch/core/error.h"
-#include "filter_lowstretch/core/parameterize.h"
-#include "filter_lowstretch/plugin_common/result_lines.h"
-#include "filter_lowstretch/vcg/mesh_arrays.h"
+#include "atlas/charts.h"
+#include "core/errors.h"
+#include "core/parameterize.h"
+#include "plugin_common/result_lines.h"
+#include "vcg_arrays/mesh_arrays.h"
 
 namespace lowstretch {
 namespace plugin {

@@ -1,4 +1,4 @@
-#include "result_lines.h"
+#include "plugin_common/result_lines.h"
 
 #include <cstdarg>
 #include <cstdio>

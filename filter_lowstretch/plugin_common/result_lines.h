@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "filter_lowstretch/atlas/charts.h"
+#include "atlas/charts.h"
 
 namespace lowstretch {
 

@@ -9,12 +9,12 @@
 #include <sstream>
 #include <string>
 
-#include "../atlas/charts.h"
-#include "../core/parameterize.h"
-#include "../plugin_common/result_lines.h"
-#include "../vcg/mesh_arrays.h"
-#include "mesh_io.h"
-#include "uv_svg.h"
+#include "atlas/charts.h"
+#include "core/parameterize.h"
+#include "plugin_common/result_lines.h"
+#include "vcg_arrays/mesh_arrays.h"
+#include "tool/mesh_io.h"
+#include "tool/uv_svg.h"
 
 namespace {
 

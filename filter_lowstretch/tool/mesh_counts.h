@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "tool_mesh.h"
+#include "tool/tool_mesh.h"
 
 namespace lowstretch {
 

@@ -1,9 +1,9 @@
-#include "mesh_io.h"
+#include "tool/mesh_io.h"
 
-#include "obj_reader.h"
-#include "obj_writer.h"
-#include "off_reader.h"
-#include "ply_reader.h"
+#include "tool/obj_reader.h"
+#include "tool/obj_writer.h"
+#include "tool/off_reader.h"
+#include "tool/ply_reader.h"
 
 #include <algorithm>
 #include <cctype>

@@ -1,6 +1,6 @@
-#include "obj_reader.h"
+#include "tool/obj_reader.h"
 
-#include "mesh_counts.h"
+#include "tool/mesh_counts.h"
 
 #include <cstdlib>
 #include <fstream>

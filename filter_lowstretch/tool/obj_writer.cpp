@@ -1,4 +1,4 @@
-#include "obj_writer.h"
+#include "tool/obj_writer.h"
 
 #include <cstdio>
 #include <cstring>

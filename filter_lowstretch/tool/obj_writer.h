@@ -6,7 +6,7 @@
 #pragma once
 #include <string>
 
-#include "tool_mesh.h"
+#include "tool/tool_mesh.h"
 
 namespace lowstretch {
 

@@ -1,4 +1,4 @@
-#include "off_reader.h"
+#include "tool/off_reader.h"
 
 #include <cerrno>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <sstream>
 #include <vector>
 
-#include "mesh_counts.h"
+#include "tool/mesh_counts.h"
 
 namespace lowstretch {
 

@@ -1,4 +1,4 @@
-#include "ply_reader.h"
+#include "tool/ply_reader.h"
 
 #include <cerrno>
 #include <cmath>
@@ -9,7 +9,7 @@
 #include <sstream>
 #include <vector>
 
-#include "mesh_counts.h"
+#include "tool/mesh_counts.h"
 
 namespace lowstretch {
 

@@ -1,4 +1,4 @@
-#include "uv_svg.h"
+#include "tool/uv_svg.h"
 
 #include <algorithm>
 #include <cmath>

@@ -28,8 +28,8 @@
 #include "core/disk_mesh.h"
 #include "core/parameterize.h"
 #include "core/stretch.h"
-#include "mesh_io.h"
-#include "vcg/mesh_arrays.h"
+#include "tool/mesh_io.h"
+#include "vcg_arrays/mesh_arrays.h"
 
 using namespace lowstretch;
 using Clock = std::chrono::steady_clock;

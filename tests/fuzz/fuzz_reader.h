@@ -13,7 +13,7 @@
 #include "atlas/charts.h"
 #include "core/parameterize.h"
 #include "tool/mesh_io.h"
-#include "vcg/mesh_arrays.h"
+#include "vcg_arrays/mesh_arrays.h"
 
 namespace lowstretch_fuzz {
 

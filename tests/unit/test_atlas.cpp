@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "atlas/charts.h"
-#include "atlas/split_until_bounded.h"
+#include "atlas/bound/split_until_bounded.h"
 #include "generated_meshes.h"
 #include "layout_checks.h"
 

@@ -1,7 +1,7 @@
-// atlas/boundary_crossing.h: a map whose boundary folds over itself is found, a plain one is not.
+// atlas/chart_map/boundary_crossing.h: a map whose boundary folds over itself is found, a plain one is not.
 #include <gtest/gtest.h>
 
-#include "atlas/boundary_crossing.h"
+#include "atlas/chart_map/boundary_crossing.h"
 #include "generated_meshes.h"
 
 using namespace lowstretch;

@@ -15,8 +15,8 @@
 #include "core/stretch.h"
 #include "generated_meshes.h"
 #include "layout_checks.h"
-#include "mesh_io.h"
-#include "vcg/mesh_arrays.h"
+#include "tool/mesh_io.h"
+#include "vcg_arrays/mesh_arrays.h"
 
 using namespace lowstretch;
 

@@ -3,12 +3,12 @@
 #include <gtest/gtest.h>
 
 #include "core/boundary_loops.h"
-#include "atlas/close_holes.h"
-#include "atlas/cut_graph.h"
-#include "atlas/cut_mesh.h"
+#include "atlas/cut/close_holes.h"
+#include "atlas/cut/cut_graph.h"
+#include "atlas/cut/cut_mesh.h"
 #include "core/disk_mesh.h"
 #include "core/half_edges.h"
-#include "atlas/mesh_components.h"
+#include "atlas/cut/mesh_components.h"
 #include "generated_meshes.h"
 
 using namespace lowstretch;

@@ -1,10 +1,10 @@
-// Charts mapped again free (atlas/free_charts.h): flat charts seen along their normal.
+// Charts mapped again free (atlas/chart_map/free_charts.h): flat charts seen along their normal.
 #include <gtest/gtest.h>
 
 #include <vector>
 
-#include "atlas/free_charts.h"
-#include "atlas/solved_chart.h"
+#include "atlas/chart_map/free_charts.h"
+#include "atlas/chart_map/solved_chart.h"
 #include "generated_meshes.h"
 
 using namespace lowstretch;

@@ -22,8 +22,8 @@
 
 #include "core/parameterize.h"
 #include "generated_meshes.h"
-#include "mesh_io.h"
-#include "vcg/mesh_arrays.h"
+#include "tool/mesh_io.h"
+#include "vcg_arrays/mesh_arrays.h"
 
 using namespace lowstretch;
 

@@ -1,12 +1,12 @@
-// A flat chart seen along its normal (atlas/plane_projection.h): its exact map.
+// A flat chart seen along its normal (atlas/chart_map/plane_projection.h): its exact map.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 #include <cmath>
 
-#include "atlas/plane_projection.h"
+#include "atlas/chart_map/plane_projection.h"
 #include "generated_meshes.h"
-#include "stretch.h"
+#include "core/stretch.h"
 
 using namespace lowstretch;
 

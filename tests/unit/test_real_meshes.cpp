@@ -9,8 +9,8 @@
 #include "atlas/charts.h"
 #include "core/parameterize.h"
 #include "layout_checks.h"
-#include "mesh_io.h"
-#include "vcg/mesh_arrays.h"
+#include "tool/mesh_io.h"
+#include "vcg_arrays/mesh_arrays.h"
 
 using namespace lowstretch;
 

@@ -1,4 +1,4 @@
-// The charts' cells (atlas/rectangle_layout.h): they tile the unit square, each with its chart's
+// The charts' cells (atlas/pack/rectangle_layout.h): they tile the unit square, each with its chart's
 // share of the area, and a tiling that gives every chart its own shape is found when one exists.
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "atlas/rectangle_layout.h"
+#include "atlas/pack/rectangle_layout.h"
 
 using namespace lowstretch;
 

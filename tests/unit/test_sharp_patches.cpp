@@ -1,9 +1,9 @@
-// Patches between sharp edges (atlas/sharp_patches.h): the faces of a model made of faces.
+// Patches between sharp edges (atlas/cut/sharp_patches.h): the faces of a model made of faces.
 #include <gtest/gtest.h>
 
 #include <vector>
 
-#include "atlas/sharp_patches.h"
+#include "atlas/cut/sharp_patches.h"
 #include "generated_meshes.h"
 
 using namespace lowstretch;

@@ -4,7 +4,7 @@
 #include <map>
 #include <utility>
 
-#include "atlas/split_vertex_fans.h"
+#include "atlas/cut/split_vertex_fans.h"
 #include "core/half_edges.h"
 #include "generated_meshes.h"
 

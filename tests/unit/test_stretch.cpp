@@ -11,7 +11,7 @@
 #include "core/parameterize.h"
 #include "core/stretch.h"
 #include "generated_meshes.h"
-#include "vcg/mesh_arrays.h"
+#include "vcg_arrays/mesh_arrays.h"
 
 using namespace lowstretch;
 

@@ -1,0 +1,105 @@
+#include "atlas/bound/cut_invalid_charts.h"
+
+#include <algorithm>
+#include <utility>
+
+#include "core/half_edges.h"
+#include "atlas/cut/mesh_components.h"
+#include "atlas/cut/split_chart.h"
+#include "core/stretch.h"
+
+namespace lowstretch {
+
+namespace {
+
+double stored_area(const Eigen::MatrixXd& corner_uv, Eigen::Index f) {
+  const auto c = [&](int k) { return Eigen::Vector2d(corner_uv.block(f, 2 * k, 1, 2).transpose()); };
+  return signed_uv_area(c(0), c(1), c(2));
+}
+
+// The faces of `chart` other than `taken`, in their edge-connected parts.
+std::vector<std::vector<int>> connected_parts(const std::vector<int>& faces, const std::vector<char>& taken,
+                                              const Eigen::MatrixXi& F) {
+  std::vector<int> rest;
+  for (const int f : faces)
+    if (!taken[size_t(f)]) rest.push_back(f);
+  Eigen::MatrixXi rest_F(Eigen::Index(rest.size()), 3);
+  for (size_t j = 0; j < rest.size(); ++j) rest_F.row(Eigen::Index(j)) = F.row(rest[j]);
+  int count = 0;
+  const std::vector<int> component = face_components(rest_F, count);
+  std::vector<std::vector<int>> parts(static_cast<size_t>(count));
+  for (size_t j = 0; j < rest.size(); ++j) parts[size_t(component[j])].push_back(rest[j]);
+  return parts;
+}
+
+// A UV triangle under this share of the texture is lost to every texture size and to rounding
+// (a 1024^2 texel is 1e-6 of it): a sliver of a reconstruction, mapped to scale. The atlas
+// benchmark counts one under 1e-12 of the layout's square as zero-area.
+const double kLeastUvArea = 1e-11;
+
+}  // namespace
+
+std::vector<int> invalid_faces(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& corner_uv) {
+  std::vector<int> invalid;
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    // A flat face may map to zero area; folded, its neighbours overlap.
+    if (is_flat_face(unit_V, F, f) ? stored_area(corner_uv, f) < 0 : !(stored_area(corner_uv, f) > kLeastUvArea))
+      invalid.push_back(int(f));
+  return invalid;
+}
+
+void cut_invalid_charts(std::vector<SolvedChart>& charts, std::vector<int>& guests, const std::vector<int>& face_chart,
+                        const std::vector<int>& invalid, const std::vector<int>& stretched, bool into_faces,
+                        const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const ChartOptions& options,
+                        std::vector<int>& flat) {
+  std::vector<char> taken(size_t(F.rows()), 0), cut(charts.size(), 0), split(charts.size(), 0);
+  for (const int f : invalid) {
+    if (face_chart[size_t(f)] >= int(charts.size())) continue;  // a face already left alone, on its point
+    taken[size_t(f)] = 1;
+    cut[size_t(face_chart[size_t(f)])] = 1;
+  }
+  for (const int c : stretched) split[size_t(c)] = cut[size_t(c)] = !cut[size_t(c)];
+  const std::vector<int> twin = stretched.empty() ? std::vector<int>() : opposite_half_edges(F);
+  guests.erase(std::remove_if(guests.begin(), guests.end(), [&](int g) { return cut[size_t(g)] != 0; }), guests.end());
+  std::vector<int> local_of(size_t(unit_V.rows()), -1);
+  std::vector<SolvedChart> pieces;
+  const auto add_piece = [&](std::vector<int> faces) {
+    SolvedChart piece;
+    piece.faces = std::move(faces);
+    if (make_chart_mesh(unit_V, F, piece.faces, local_of, piece.mesh)) {  // no disk with holes: face by face
+      for (const int f : piece.faces) {
+        SolvedChart single;
+        single.faces = {f};
+        if (make_chart_mesh(unit_V, F, single.faces, local_of, single.mesh)) flat.push_back(f);  // no area to map
+        else pieces.push_back(std::move(single));
+      }
+      return;
+    }
+    pieces.push_back(std::move(piece));
+  };
+  for (size_t c = 0; c < charts.size(); ++c) {
+    if (!cut[c]) continue;
+    for (const int f : charts[c].faces)
+      if (into_faces || taken[size_t(f)]) add_piece({f});
+    if (into_faces) continue;
+    for (std::vector<int>& part : split[c] ? split_chart(unit_V, F, twin, charts[c].faces) : connected_parts(charts[c].faces, taken, F))
+      add_piece(std::move(part));
+  }
+  for (SolvedChart& piece : pieces) {
+    solve_chart(piece, options.disk, 0);  // may replace the chart by its square map: marked after
+    piece.kept_whole = "cut where its map was invalid";
+    piece.cut_for_validity = true;
+  }
+  std::vector<SolvedChart> kept;
+  std::vector<int> new_index(charts.size(), -1);
+  for (size_t c = 0; c < charts.size(); ++c)
+    if (!cut[c]) {
+      new_index[c] = int(kept.size());
+      kept.push_back(std::move(charts[c]));
+    }
+  for (int& g : guests) g = new_index[size_t(g)];
+  for (SolvedChart& piece : pieces) kept.push_back(std::move(piece));
+  charts = std::move(kept);
+}
+
+}  // namespace lowstretch

@@ -1,0 +1,321 @@
+#include "atlas/bound/split_until_bounded.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <numeric>
+#include <utility>
+
+#include "atlas/chart_map/chart_threads.h"
+#include "core/half_edges.h"
+#include "atlas/cut/split_chart.h"
+
+namespace lowstretch {
+
+namespace {
+
+const double kInf = std::numeric_limits<double>::infinity();
+
+// How many more times the largest part of a chart is cut before any part is mapped: a chart far
+// above the bound is mostly a body with protrusions, which the cuts take off one at a time, and
+// mapping the body again after each took most of the time (the armadillo's body, 47,578 faces
+// down to 22,226, was mapped in 7 rounds). One more cut per doubling of the L2 stretch over the
+// bound; none for a chart with flipped triangles, whose stretch says little, unless they are a
+// few slivers of a reconstruction (under kFewInvalid of its faces): then the stretch of the others
+// (a genus-35 scan's body was mapped 9 times, 444k down to 285k vertices, one cut each).
+const double kFewInvalid = 1e-3;
+int cuts_ahead(const ChartPass& p, size_t faces, const ChartOptions& options) {
+  const bool few_invalid = double(p.flipped + p.degenerate) <= kFewInvalid * double(faces);
+  const double l2 = p.flipped + p.degenerate == 0 ? p.l2_stretch : few_invalid ? p.l2_of_valid : 0;
+  if (!std::isfinite(l2) || !(l2 > 0)) return 0;
+  return std::min(options.most_cuts_ahead, std::max(0, int(std::floor(std::log2(l2 / options.max_stretch)))));
+}
+// Only parts this large are cut ahead: smaller ones are cheap to map, and cutting them unmapped
+// changes atlases. From 30 faces the cow's efficiency fell 0.619 -> 0.611; from 1000, the 15 bench
+// meshes kept their atlas but Atlas.CutsAheadGiveTheSameAtlasAsMappingEveryPart's ball did not;
+// from 3000 all keep theirs (the armadillo 3.27 -> 2.40 s, median of 5; 2.25 s from 1000).
+const int kLeastCutAhead = 3000;  // faces
+// And only a body, a part that kept two thirds of the faces of the chart it was cut from: the parts
+// of a chart cut nearer its middle may meet the bound (the 769k-face scan without this rule: 2576
+// charts and efficiency 0.601 instead of 2344 and 0.607; with it, 2400 and 0.607).
+const double kLeastBodyShare = 0.67;
+
+// A chart's cut: its parts, then the parts of its largest part cut ahead, and so on; parent: -1
+// for a part of the chart itself, else the index of the piece it was cut from. Every piece but
+// those cut ahead has its mesh built.
+struct Cut {
+  std::vector<SolvedChart> pieces;
+  std::vector<int> parent;
+  int ahead() const {  // pieces cut ahead
+    return int(std::count_if(pieces.begin(), pieces.end(), [](const SolvedChart& p) { return p.cut_ahead; }));
+  }
+};
+
+// Empty if the chart cannot be cut into parts that are disks with holes (a part whose faces meet
+// at a single vertex); a cut ahead that leaves such a part is not made.
+Cut cut_with_cuts_ahead(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const std::vector<int>& twin,
+                        const SolvedChart& chart, int ahead, std::vector<int>& local_of) {
+  Cut cut;
+  std::vector<size_t> level_start = {0};  // pieces [level_start[k], level_start[k + 1]) are level k's
+  const auto add_parts = [&](const std::vector<int>& faces, int parent) {
+    std::vector<std::vector<int>> parts = split_chart(unit_V, F, twin, faces);
+    if (parts.size() < 2) return false;
+    for (std::vector<int>& part : parts) {
+      cut.pieces.emplace_back();
+      cut.pieces.back().faces = std::move(part);
+      cut.parent.push_back(parent);
+    }
+    return true;
+  };
+  if (!add_parts(chart.faces, -1)) return {};
+  size_t cut_faces = chart.faces.size();
+  for (int cuts = 0; cuts < ahead; ++cuts) {
+    const size_t first = level_start.back();
+    size_t largest = first;
+    for (size_t j = first; j < cut.pieces.size(); ++j)
+      if (cut.pieces[j].faces.size() > cut.pieces[largest].faces.size()) largest = j;
+    const size_t faces = cut.pieces[largest].faces.size();
+    if (int(faces) < kLeastCutAhead || double(faces) < kLeastBodyShare * double(cut_faces)) break;
+    level_start.push_back(cut.pieces.size());
+    if (!add_parts(cut.pieces[largest].faces, int(largest))) {
+      level_start.pop_back();
+      break;
+    }
+    cut.pieces[largest].cut_ahead = true;
+    cut_faces = faces;
+  }
+  // The meshes, built only now: a piece cut ahead never needs one. A part that is no disk with
+  // holes undoes the cut ahead it came from, as if that had not been made.
+  std::vector<char> built(cut.pieces.size(), 0);
+  for (size_t j = 0; j < cut.pieces.size();) {
+    SolvedChart& piece = cut.pieces[j];
+    if (built[j] || piece.cut_ahead || !make_chart_mesh(unit_V, F, piece.faces, local_of, piece.mesh)) {
+      built[j] = !piece.cut_ahead;
+      ++j;
+      continue;
+    }
+    const size_t level = size_t(std::upper_bound(level_start.begin(), level_start.end(), j) - level_start.begin()) - 1;
+    if (level == 0) return {};
+    const size_t from = size_t(cut.parent[j]);
+    cut.pieces.resize(level_start[level]);
+    cut.parent.resize(level_start[level]);
+    level_start.resize(level);
+    cut.pieces[from].cut_ahead = false;
+    j = from;  // its mesh next
+  }
+  return cut;
+}
+
+// The chart's own parts only, without the cuts ahead (which would pass the chart limit): the part
+// that was cut ahead gets its mesh; if it is no disk with holes, the chart is not cut at all.
+void keep_only_the_first_cut(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, Cut& cut, std::vector<int>& local_of) {
+  while (!cut.parent.empty() && cut.parent.back() >= 0) {
+    cut.pieces.pop_back();
+    cut.parent.pop_back();
+  }
+  bool built = true;
+  for (SolvedChart& piece : cut.pieces)
+    if (piece.cut_ahead) {
+      piece.cut_ahead = false;
+      built = built && !make_chart_mesh(unit_V, F, piece.faces, local_of, piece.mesh);
+    }
+  if (!built) cut = Cut();
+}
+
+// The charts cut from one another: node 0.. are the components, a node's parts come after it.
+struct ChartTree {
+  std::vector<SolvedChart> nodes;
+  std::vector<std::vector<int>> parts;  // per node, empty for a leaf
+};
+
+// Undoes the cuts that did not pay: bottom up, a chart whose parts (all its leaves) together
+// cost at least as much texture (texture_cost) as it does alone becomes a leaf again, so that its
+// seams go. A cut that pays only after further cuts is kept: the leaves are compared, not the
+// first parts. A chart cut ahead has no map: `map_cut_ahead` maps it when its leaves cost more
+// than the bound's stretch would (its cut may not have paid); otherwise, or if it cannot be
+// mapped, it stays cut.
+void undo_cuts_that_did_not_pay(ChartTree& tree, double max_stretch, const std::function<bool(SolvedChart&)>& map_cut_ahead) {
+  const size_t n = tree.nodes.size();
+  std::vector<double> weighted(n, 0.0);  // over each node's leaves: their texture_cost (the leaves cover its area)
+  std::vector<double> area(n, 0.0);      // and sum A
+  for (size_t i = n; i-- > 0;) {
+    SolvedChart& node = tree.nodes[i];
+    for (int p : tree.parts[i]) {
+      weighted[i] += weighted[size_t(p)];
+      area[i] += area[size_t(p)];
+    }
+    if (node.cut_ahead && weighted[i] > max_stretch * max_stretch * area[i] && map_cut_ahead(node)) node.cut_ahead = false;
+    const ChartPass& alone = node.kept;
+    const bool valid = alone.flipped + alone.degenerate == 0 && !node.cut_ahead;  // no map: stays cut
+    const double own = valid ? texture_cost(node) : kInf;
+    if (!tree.parts[i].empty()) {
+      if (!(own <= weighted[i]) || !valid) continue;  // an invalid chart stays cut
+      tree.parts[i].clear();
+      node.kept_whole = "its parts stretched more";
+    }
+    weighted[i] = own;
+    area[i] = alone.area_3d;
+  }
+}
+
+// The multigrid's relative residual for the maps that decide the cuts (the final maps keep the
+// method's 1e-10). At 1e-8 the 15 meshes of the bench table give the same charts (at 1e-7 the
+// closed Max Planck head is cut into 41 charts instead of staying one).
+const double kDecidingTolerance = 1e-8;
+
+// Where the square may turn a chart that the bound cuts into one it keeps: the square took
+// the 15 bench meshes' charts from at most 1.13 x the bound on their own rectangle to under it
+// (75 of the 5166 charts tried both ways). Above, the chart is cut whatever its map: its square
+// would only cost a second solve (the armadillo 3.0 -> 2.2 s with the same atlas; 11 of the 15
+// meshes give the same atlas, the others' efficiency moves by less than 1%).
+const double kSquareMayMeet = 1.5;
+
+// The map that decides whether a chart is cut: onto its own rectangle, or the square where that
+// may bring it under the bound (a chart too small to cut takes the better of the two).
+void map_to_decide(SolvedChart& chart, const Options& deciding, double max_stretch) {
+  const bool may_cut = int(chart.faces.size()) >= 2 * kSmallestChart;
+  solve_chart(chart, deciding, 0, may_cut ? kSquareMayMeet * max_stretch : kInf);
+  chart.deciding_map = true;
+}
+
+// Multigrid iterations for a deciding map before the sparse LU takes over: a reconstruction's
+// body of 444k vertices (its handles cut open) did not converge in 50, each time 8 s spent before
+// the LU.
+const int kDecidingIterations = 20;
+
+// Deciding where to cut needs the map's stretch, not its last digits: U0 and U1 only (the atlas
+// came out the same on the shared meshes, 30-50% sooner), solved to kDecidingTolerance. The
+// layout maps each chart fully.
+Options deciding_options(Options deciding) {
+  deciding.max_passes = std::min(deciding.max_passes, 1);
+  deciding.solver.tolerance = std::max(deciding.solver.tolerance, kDecidingTolerance);
+  deciding.solver.residual_accepted = std::max(deciding.solver.residual_accepted, 100 * deciding.solver.tolerance);
+  deciding.solver.max_iterations = std::min(deciding.solver.max_iterations, kDecidingIterations);
+  return deciding;
+}
+
+// A chart of fewer than 2 x kSmallestChart faces stays whole unless it stretches more than
+// kSmallCutAbove times the bound and has kSmallestCutChart faces or more (charts.h), or has two
+// faces or more and stretches more than kTinyCutAbove times the bound: no chart is too small to
+// cut, a single triangle maps without stretch (a scan's handle of 7 faces kept L2 380).
+const double kTinyCutAbove = 8;
+bool too_small_to_cut(const SolvedChart& chart, double max_stretch) {
+  const int faces = int(chart.faces.size());
+  if (faces >= 2 * kSmallestChart) return false;
+  if (faces >= 2 && !(chart.kept.l2_stretch <= kTinyCutAbove * max_stretch)) return false;
+  return faces < kSmallestCutChart || chart.kept.l2_stretch <= kSmallCutAbove * max_stretch;
+}
+
+}  // namespace
+
+bool parts_meet_the_bound(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const std::vector<std::vector<int>>& parts,
+                          const ChartOptions& options) {
+  std::vector<SolvedChart> charts(parts.size());
+  std::vector<int> local_of(size_t(unit_V.rows()), -1);
+  size_t faces = 0;
+  for (size_t i = 0; i < parts.size(); ++i) {
+    charts[i].faces = parts[i];
+    if (make_chart_mesh(unit_V, F, parts[i], local_of, charts[i].mesh)) return false;
+    faces += parts[i].size();
+  }
+  const Options deciding = deciding_options(options.disk);
+  for_each_index(int(charts.size()), [&](int i, int) {
+    SolvedChart& chart = charts[size_t(i)];
+    map_to_decide(chart, for_share(deciding, chart.faces.size(), faces), options.max_stretch);
+  }, largest_first(charts, 0, charts.size()));
+  return std::none_of(charts.begin(), charts.end(),
+                      [&](const SolvedChart& c) { return c.map.error || bound_cuts(c, options.max_stretch); });
+}
+
+Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, std::vector<std::vector<int>> components,
+                          const ChartOptions& options, std::vector<SolvedChart>& leaves, std::vector<SolvedChart>& uncut,
+                          std::vector<std::string>& notes) {
+  const std::vector<int> twin = opposite_half_edges(F);
+  std::vector<std::vector<int>> local_of(kMostThreads);  // make_chart_mesh's scratch, per worker
+  local_of[0].assign(size_t(unit_V.rows()), -1);
+  ChartTree tree;
+  for (std::vector<int>& faces : components) {
+    tree.nodes.emplace_back();
+    if (Error e = make_chart_mesh(unit_V, F, faces, local_of[0], tree.nodes.back().mesh)) return e;
+    tree.nodes.back().faces = std::move(faces);
+  }
+  tree.parts.resize(tree.nodes.size());
+  int charts = int(tree.nodes.size());
+  bool limit_reached = false;
+  const Options deciding = deciding_options(options.disk);
+  for (size_t first = 0, end = tree.nodes.size(); first < end; first = end, end = tree.nodes.size()) {
+    const size_t round_faces = faces_in(tree.nodes, first, end);
+    for_each_index(int(end - first), [&](int i, int) {
+      SolvedChart& chart = tree.nodes[first + size_t(i)];
+      if (!chart.cut_ahead) map_to_decide(chart, for_share(deciding, chart.faces.size(), round_faces), options.max_stretch);
+    }, largest_first(tree.nodes, first, end));
+    // The charts the bound cuts, cut on both cores (a chart's parts depend on it alone: on the
+    // 769k-face scan the cuts took 5.3 s on one); the chart limit is applied after, in order.
+    std::vector<int> to_cut;
+    for (size_t i = first; i < end; ++i) {
+      if (tree.nodes[i].cut_ahead) continue;
+      if (tree.nodes[i].map.error) return tree.nodes[i].map.error;
+      if (!bound_cuts(tree.nodes[i], options.max_stretch)) continue;
+      if (too_small_to_cut(tree.nodes[i], options.max_stretch)) tree.nodes[i].kept_whole = "too few faces to cut";
+      else to_cut.push_back(int(i));
+    }
+    std::vector<Cut> cuts(to_cut.size());
+    std::vector<int> order(to_cut.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+      return tree.nodes[size_t(to_cut[size_t(a)])].faces.size() > tree.nodes[size_t(to_cut[size_t(b)])].faces.size();
+    });
+    for_each_index(int(to_cut.size()), [&](int k, int worker) {
+      if (local_of[size_t(worker)].empty()) local_of[size_t(worker)].assign(size_t(unit_V.rows()), -1);
+      const SolvedChart& chart = tree.nodes[size_t(to_cut[size_t(k)])];
+      cuts[size_t(k)] = cut_with_cuts_ahead(unit_V, F, twin, chart, cuts_ahead(chart.kept, chart.faces.size(), options),
+                                                local_of[size_t(worker)]);
+    }, order);
+    for (size_t k = 0; k < to_cut.size(); ++k) {
+      const size_t i = size_t(to_cut[k]);
+      if (charts >= options.max_charts) {
+        tree.nodes[i].kept_whole = "the chart limit is reached";
+        limit_reached = true;
+        continue;
+      }
+      Cut& cut = cuts[k];
+      if (charts + int(cut.pieces.size()) - cut.ahead() - 1 > options.max_charts)
+        keep_only_the_first_cut(unit_V, F, cut, local_of[0]);
+      if (cut.pieces.empty()) tree.nodes[i].kept_whole = "no cut into disks was found";
+      charts += std::max(0, int(cut.pieces.size()) - cut.ahead() - 1);
+      const size_t base = tree.nodes.size();
+      for (size_t j = 0; j < cut.pieces.size(); ++j) {
+        tree.parts[cut.parent[j] < 0 ? i : base + size_t(cut.parent[j])].push_back(int(tree.nodes.size()));
+        tree.nodes.push_back(std::move(cut.pieces[j]));
+        tree.parts.emplace_back();
+      }
+    }
+    if (options.disk.progress && !options.disk.progress(0.9 * (1 - std::pow(0.5, double(end))), "charts"))
+      return {ErrorCode::Cancelled, 0, ""};
+  }
+  undo_cuts_that_did_not_pay(tree, options.max_stretch, [&](SolvedChart& chart) {
+    if (make_chart_mesh(unit_V, F, chart.faces, local_of[0], chart.mesh)) return false;
+    map_to_decide(chart, deciding, options.max_stretch);
+    return !chart.map.error;
+  });
+  bool cut = false;
+  for (size_t root = 0; root < components.size(); ++root) cut = cut || !tree.parts[root].empty();
+  for (size_t root = 0; root < components.size() && cut; ++root) {
+    uncut.push_back(tree.nodes[root]);
+    if (!tree.parts[root].empty()) uncut.back().kept_whole = "one chart per part stretched less";
+  }
+  std::vector<int> stack;
+  for (size_t root = components.size(); root-- > 0;) stack.push_back(int(root));
+  while (!stack.empty()) {  // the leaves, depth first, parts in order
+    const int i = stack.back();
+    stack.pop_back();
+    if (tree.parts[size_t(i)].empty()) leaves.push_back(std::move(tree.nodes[size_t(i)]));
+    for (size_t k = tree.parts[size_t(i)].size(); k-- > 0;) stack.push_back(tree.parts[size_t(i)][k]);
+  }
+  if (limit_reached)
+    notes.push_back("the chart limit (" + std::to_string(options.max_charts) + ") stopped the splitting");
+  return {};
+}
+
+}  // namespace lowstretch

@@ -1,0 +1,87 @@
+#include "atlas/chart_map/free_charts.h"
+
+#include <utility>
+
+#include "atlas/chart_map/boundary_crossing.h"
+#include "atlas/chart_map/chart_threads.h"
+#include "atlas/chart_map/plane_projection.h"
+
+namespace lowstretch {
+
+namespace {
+
+// The chart's own shape seen along its normal, as a free map (one pass, already the map).
+void map_as_seen_along_normal(SolvedChart& chart) {
+  chart.free_boundary = true;
+  chart.deciding_map = false;
+  chart.map = Result();
+  chart.map.uv = project_onto_own_plane(chart.mesh.V, chart.mesh.F.topRows(Eigen::Index(chart.faces.size())));
+  chart.kept = measure_real_faces(chart.mesh, chart.map.uv);
+  chart.passes = {chart.kept};
+  PassMetrics only;
+  only.l2_stretch = chart.kept.l2_stretch;
+  only.flipped = chart.kept.flipped;
+  only.degenerate = chart.kept.degenerate;
+  chart.map.passes = {only};
+  chart.fit_box();
+}
+
+// A chart of the same faces, with no map yet.
+SolvedChart unmapped_copy(const SolvedChart& chart) {
+  SolvedChart copy;
+  copy.mesh = chart.mesh;
+  copy.faces = chart.faces;
+  copy.kept_whole = chart.kept_whole;
+  return copy;
+}
+
+// Whether a free map's outline crosses itself (so the map overlaps itself).
+bool crosses_itself(const SolvedChart& free) {
+  return uv_boundary_crosses_itself(free.mesh.F.topRows(Eigen::Index(free.faces.size())), free.map.uv);
+}
+
+}  // namespace
+
+void free_the_charts_that_stretch(std::vector<SolvedChart>& charts, const ChartOptions& options, double must_pay) {
+  std::vector<int> above;
+  // What a chart's map makes of its box: fill / L2^2 (a rectangle with a closed hole fills less than 1).
+  const auto uses = [](const SolvedChart& c) {
+    return c.kept.flipped + c.kept.degenerate > 0 ? 0 : c.fill() / (c.kept.l2_stretch * c.kept.l2_stretch);
+  };
+  // A free map covers at most its box at L2 at least 1: it can pay only below 1 / must_pay.
+  for (size_t i = 0; i < charts.size(); ++i)
+    if (!(uses(charts[i]) * must_pay > 1)) above.push_back(int(i));
+  size_t above_faces = 0;
+  for (const int i : above) above_faces += charts[size_t(i)].faces.size();
+  for_each_index(int(above.size()), [&](int k, int) {
+    SolvedChart& chart = charts[size_t(above[size_t(k)])];
+    double best = must_pay * uses(chart);
+    for (const bool seen_along_normal : {false, true}) {
+      SolvedChart free = unmapped_copy(chart);
+      if (seen_along_normal) map_as_seen_along_normal(free);
+      else solve_onto(free, for_share(options.disk, chart.faces.size(), above_faces), 0, true);
+      if (free.map.error || free.kept.flipped + free.kept.degenerate > 0) continue;
+      const double used = uses(free);
+      if (!(used > best)) continue;
+      if (crosses_itself(free)) continue;
+      best = used;
+      chart = std::move(free);
+    }
+  });
+}
+
+void see_flat_charts_along_normal(std::vector<SolvedChart>& charts) {
+  for_each_index(int(charts.size()), [&](int k, int) {
+    SolvedChart& chart = charts[size_t(k)];
+    if (chart.free_boundary) return;
+    SolvedChart seen = unmapped_copy(chart);
+    map_as_seen_along_normal(seen);
+    if (seen.kept.flipped + seen.kept.degenerate > 0 || !(seen.kept.l2_stretch <= kFlatBelow) ||
+        !(seen.kept.l2_stretch < chart.kept.l2_stretch))
+      return;
+    if (crosses_itself(seen)) return;
+    chart = std::move(seen);
+  });
+}
+
+}  // namespace lowstretch

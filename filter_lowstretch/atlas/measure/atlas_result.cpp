@@ -1,0 +1,277 @@
+#include "atlas/measure/atlas_result.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+
+#include "atlas/bound/cut_invalid_charts.h"
+#include "core/half_edges.h"
+#include "atlas/pack/lay_out_charts.h"
+#include "core/stretch.h"
+
+namespace lowstretch {
+
+namespace {
+
+const double kInf = std::numeric_limits<double>::infinity();
+
+// L2 stretch of the whole layout from the charts' own: with every chart at one texel density,
+// L2^2 is the 3D-area-weighted mean of the charts' normalized L2^2.
+std::vector<LayoutPass> layout_passes(const std::vector<std::vector<ChartPass>>& passes, const std::vector<int>& kept) {
+  size_t most = 0;
+  for (const auto& p : passes) most = std::max(most, p.size());
+  std::vector<LayoutPass> layout(most);
+  for (size_t k = 0; k < most; ++k) {
+    double weighted = 0, area = 0;
+    layout[k].pass = int(k);
+    for (size_t c = 0; c < passes.size(); ++c) {
+      const ChartPass& p = k < passes[c].size() ? passes[c][k] : passes[c][size_t(kept[c])];
+      layout[k].flipped += p.flipped;
+      layout[k].degenerate += p.degenerate;
+      weighted += p.area_3d * p.l2_stretch * p.l2_stretch;
+      area += p.area_3d;
+    }
+    const bool bad = layout[k].flipped + layout[k].degenerate > 0 || !(area > 0);
+    layout[k].l2_stretch = bad ? kInf : std::sqrt(weighted / area);
+  }
+  return layout;
+}
+
+// Moves a layout of [0,1]^2 uniformly into [g, 1 - g]^2, g = gutter / texture_size.
+void keep_inside_gutter(const ChartOptions& o, Eigen::MatrixXd& corner_uv) {
+  const double g = o.gutter / o.texture_size;
+  corner_uv = (corner_uv.array() * (1 - 2 * g) + g).matrix();
+}
+
+// The layout measured like a disk's pass, as a mesh of its own: three vertices per face, and an
+// edge for every pair of corners that is one edge of the input and one edge of the layout.
+void measure_layout(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, int vertex_rows,
+                    const std::vector<std::vector<int>>& faces_of, ChartsResult& result) {
+  Eigen::MatrixXd corner_V(3 * F.rows(), 3), corner_uv(3 * F.rows(), 2);
+  Eigen::MatrixXi corner_F(F.rows(), 3);
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      corner_V.row(3 * f + k) = unit_V.row(F(f, k));
+      corner_F(f, k) = int(3 * f + k);
+      corner_uv.row(3 * f + k) = result.corner_uv.block(f, 2 * k, 1, 2);
+    }
+  std::vector<std::array<int, 2>> edges;
+  const std::vector<int> twin = opposite_half_edges(F);
+  for (int h = 0; h < int(twin.size()); ++h) {
+    const int t = twin[size_t(h)];
+    const bool joined = t >= 0 && result.face_chart[size_t(h / 3)] == result.face_chart[size_t(t / 3)] &&
+                        corner_uv.row(h) == corner_uv.row(next_half_edge(t)) &&
+                        corner_uv.row(next_half_edge(h)) == corner_uv.row(t);
+    if (!joined || h < t) edges.push_back({h, next_half_edge(h)});
+  }
+  Eigen::MatrixXi corner_edges(Eigen::Index(edges.size()), 2);
+  for (size_t e = 0; e < edges.size(); ++e) corner_edges.row(Eigen::Index(e)) << edges[e][0], edges[e][1];
+  const FaceStretch s = face_stretch(corner_V, corner_F, corner_uv);
+  result.layout = measure(corner_V, corner_F, corner_edges, corner_uv, s);
+  result.coverage = s.area_uv.cwiseAbs().sum();
+  result.face_stretch.resize(F.rows());
+  for (Eigen::Index f = 0; f < F.rows(); ++f) result.face_stretch(f) = s.valid(f) ? s.normalization * s.sigma(f) : kInf;
+  result.vertex_stretch = vertex_stretch(F, vertex_rows, s);
+  std::vector<char> used(size_t(vertex_rows), 0);
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) used[size_t(F(f, k))] = 1;
+  for (int v = 0; v < vertex_rows; ++v)
+    if (!used[size_t(v)]) result.vertex_stretch(v) = 0;
+  for (size_t c = 0; c < faces_of.size(); ++c) {
+    double area_3d = 0, area_uv = 0, linf = 0;
+    for (int f : faces_of[c]) {
+      area_3d += s.area_3d(f);
+      area_uv += std::abs(s.area_uv(f));
+      linf = std::max(linf, s.valid(f) ? s.gamma(f) : kInf);
+    }
+    result.charts[c].l2_stretch = l2_stretch(s, faces_of[c]);
+    result.charts[c].linf_stretch = area_3d > 0 ? std::sqrt(area_uv / area_3d) * linf : kInf;
+  }
+}
+
+// 3D length of the edges whose two faces are in different charts.
+double length_between_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const std::vector<int>& face_chart) {
+  const std::vector<int> twin = opposite_half_edges(F);
+  double length = 0;
+  for (int h = 0; h < int(twin.size()); ++h) {
+    const int t = twin[size_t(h)];
+    if (t > h && face_chart[size_t(h / 3)] != face_chart[size_t(t / 3)])
+      length += (V.row(half_edge_tail(F, h)) - V.row(half_edge_head(F, h))).norm();
+  }
+  return length;
+}
+
+double corner_area(const Eigen::MatrixXd& corner_uv, Eigen::Index f) {
+  const auto c = [&](int k) { return Eigen::Vector2d(corner_uv.block(f, 2 * k, 1, 2).transpose()); };
+  return signed_uv_area(c(0), c(1), c(2));
+}
+
+// "chart 3", "charts 1, 4, 9", "charts 1, 4, 9 and 812 more".
+std::string charts_text(const std::vector<int>& charts) {
+  std::string text = charts.size() == 1 ? "chart " : "charts ";
+  for (size_t i = 0; i < charts.size() && i < 3; ++i) text += (i ? ", " : "") + std::to_string(charts[i]);
+  if (charts.size() > 3) text += " and " + std::to_string(charts.size() - 3) + " more";
+  return text;
+}
+
+}  // namespace
+
+ChartsResult failed_result(Error error) {
+  ChartsResult result;
+  result.error = std::move(error);
+  return result;
+}
+
+void copy_measures(const PassMetrics& from, PassMetrics& to) {
+  to.l2_stretch = from.l2_stretch;
+  to.linf_stretch = from.linf_stretch;
+  to.edge_distortion = from.edge_distortion;
+  to.angle_distortion = from.angle_distortion;
+  to.area_distortion = from.area_distortion;
+  to.flipped = from.flipped;
+  to.degenerate = from.degenerate;
+}
+
+void store(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, int vertex_rows,
+           const std::vector<std::vector<int>>& faces_of, const ChartOptions& options, ChartsResult& result) {
+  keep_inside_gutter(options, result.corner_uv);
+  std::vector<char> positive(size_t(F.rows()));
+  for (Eigen::Index f = 0; f < F.rows(); ++f) positive[size_t(f)] = corner_area(result.corner_uv, f) > 0;
+  result.corner_uv = result.corner_uv.cast<float>().cast<double>();
+  const double texel = 1.0 / (4096.0 * 4096.0);
+  for (Eigen::Index f = 0; f < F.rows(); ++f) {
+    const double area = corner_area(result.corner_uv, f);
+    result.subtexel_triangles += std::abs(area) < texel;
+    result.float_collapsed += positive[size_t(f)] && !(area > 0) && !is_flat_face(unit_V, F, f);
+  }
+  if (result.float_collapsed > 0)
+    result.notes.push_back(std::to_string(result.float_collapsed) +
+                           " UV triangles flip or collapse when their texture coordinates are rounded to float, "
+                           "as MeshLab stores them: the metrics count them");
+  measure_layout(unit_V, F, vertex_rows, faces_of, result);
+}
+
+namespace {
+
+// One layout of the charts, measured; `flat` faces (in no chart) sit on one point, as one more
+// chart.
+ChartsResult lay_out_and_store(std::vector<SolvedChart>& charts, const std::vector<int>& guests, const std::vector<int>& flat,
+                               const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, double unit, int vertex_rows,
+                               const ChartOptions& options) {
+  ChartsResult result;
+  if (Error e = lay_out(charts, options, F.rows(), guests, result)) return failed_result(e);
+  std::vector<std::vector<int>> faces_of;
+  std::vector<std::vector<ChartPass>> passes;
+  std::vector<int> kept;
+  std::vector<std::string> chart_notes;  // the core's notes, each with the charts it was given for
+  std::vector<std::vector<int>> noted;
+  for (const SolvedChart& c : charts) {
+    Chart chart;
+    chart.kept_whole = c.kept_whole ? c.kept_whole : "its cell's shape stretched it";
+    chart.faces = int(c.faces.size());
+    chart.closed_holes = c.mesh.closed_holes;
+    chart.seam_length = c.mesh.seam_length * unit;
+    chart.chosen_pass = c.map.chosen_pass;
+    chart.passes = int(c.map.passes.size());
+    result.charts.push_back(chart);
+    result.seam_length += chart.seam_length;
+    for (std::string note : c.map.notes) {
+      const size_t digits = note.find_first_not_of("0123456789");  // "6 interior edges ...": one note for all counts
+      if (digits > 0 && digits != std::string::npos && note[digits] == ' ') note = "some" + note.substr(digits);
+      const size_t k = size_t(std::find(chart_notes.begin(), chart_notes.end(), note) - chart_notes.begin());
+      if (k == chart_notes.size()) {
+        chart_notes.push_back(note);
+        noted.emplace_back();
+      }
+      noted[k].push_back(int(faces_of.size()));
+    }
+    faces_of.push_back(c.faces);
+    passes.push_back(c.passes);
+    kept.push_back(c.map.chosen_pass);
+  }
+  if (!flat.empty()) {
+    Chart points;
+    points.faces = int(flat.size());
+    for (const int f : flat) {
+      result.face_chart[size_t(f)] = int(result.charts.size());
+      result.corner_uv.row(f).setZero();
+    }
+    result.charts.push_back(points);
+  }
+  result.passes = layout_passes(passes, kept);
+  result.seam_length += unit * length_between_charts(unit_V, F, result.face_chart);
+  store(unit_V, F, vertex_rows, faces_of, options, result);
+  for (size_t k = 0; k < chart_notes.size(); ++k) result.notes.push_back(charts_text(noted[k]) + ": " + chart_notes[k]);
+  // Every chart above the bound is one note while they are few; past that, one note per reason.
+  std::vector<int> above;
+  for (size_t c = 0; c < faces_of.size(); ++c) {
+    Chart& chart = result.charts[c];
+    chart.above_bound = !(chart.l2_stretch <= options.max_stretch);
+    if (chart.above_bound) above.push_back(int(c));
+  }
+  const size_t listed = 10;
+  for (size_t k = 0; k < above.size() && (above.size() <= listed || k < listed); ++k) {
+    const Chart& chart = result.charts[size_t(above[k])];
+    result.notes.push_back("chart " + std::to_string(above[k]) + " (" + std::to_string(chart.faces) + " faces) keeps L2 stretch " +
+                           number_text(chart.l2_stretch) + " above " + number_text(options.max_stretch) + ": " +
+                           chart.kept_whole);
+  }
+  if (above.size() > listed) {
+    std::vector<std::string> reasons;
+    std::vector<std::vector<int>> of;
+    for (int c : above) {
+      const std::string reason = result.charts[size_t(c)].kept_whole;
+      const size_t k = size_t(std::find(reasons.begin(), reasons.end(), reason) - reasons.begin());
+      if (k == reasons.size()) {
+        reasons.push_back(reason);
+        of.emplace_back();
+      }
+      of[k].push_back(c);
+    }
+    for (size_t k = 0; k < reasons.size(); ++k)
+      result.notes.push_back(charts_text(of[k]) + " keep an L2 stretch above " + number_text(options.max_stretch) + ": " +
+                             reasons[k]);
+  }
+  return result;
+}
+
+// Rounds of cutting the charts with invalid faces and laying out again; the last cuts them into
+// single faces.
+const int kMostRepairRounds = 3;
+
+}  // namespace
+
+ChartsResult atlas_of(std::vector<SolvedChart> charts, std::vector<int> guests, const Eigen::MatrixXd& unit_V,
+                      const Eigen::MatrixXi& F, double unit, int vertex_rows, const ChartOptions& options) {
+  std::vector<int> flat;
+  size_t cut = 0;  // charts cut where their map was invalid
+  for (int round = 0;; ++round) {
+    ChartsResult result = lay_out_and_store(charts, guests, flat, unit_V, F, unit, vertex_rows, options);
+    const std::vector<int> invalid = result.error ? std::vector<int>() : invalid_faces(unit_V, F, result.corner_uv);
+    // Charts to cut in two: pieces far above the bound, and charts whose map folds a face that
+    // closes a hole (real faces then overlap near it, none of them flipped).
+    std::vector<int> stretched;
+    for (size_t c = 0; c < charts.size() && !result.error; ++c) {
+      const SolvedChart& chart = charts[c];
+      const bool far_above = chart.cut_for_validity && !(result.charts[c].l2_stretch <= kPieceFarAbove * options.max_stretch);
+      const bool folds = !chart.map.passes.empty() && chart.map.passes.at(size_t(chart.map.chosen_pass)).flipped > 0;
+      if (chart.faces.size() > 1 && (far_above || folds)) stretched.push_back(int(c));
+    }
+    if ((invalid.empty() && stretched.empty()) || round == kMostRepairRounds) {
+      if (cut > 0)
+        result.notes.push_back(std::to_string(cut) + (cut == 1 ? " chart" : " charts") +
+                               " with flipped or zero-area triangles cut smaller and laid out again");
+      return result;
+    }
+    std::vector<int> invalid_charts;
+    for (const int f : invalid) invalid_charts.push_back(result.face_chart[size_t(f)]);
+    std::sort(invalid_charts.begin(), invalid_charts.end());
+    cut += size_t(std::unique(invalid_charts.begin(), invalid_charts.end()) - invalid_charts.begin());
+    cut_invalid_charts(charts, guests, result.face_chart, invalid, stretched, round + 1 == kMostRepairRounds, unit_V, F,
+                       options, flat);
+  }
+}
+
+}  // namespace lowstretch

@@ -1,0 +1,31 @@
+// The atlas as the user gets it: the charts' maps laid out, moved inside the gutter, rounded to
+// float as MeshLab stores them and measured (the paper's metrics of the whole layout, each
+// chart's stretch, seams, coverage), with notes on the charts that stay above the bound.
+#pragma once
+#include <Eigen/Core>
+#include <vector>
+
+#include "atlas/charts.h"
+#include "atlas/chart_map/solved_chart.h"
+
+namespace lowstretch {
+
+// A result that carries only `error`.
+ChartsResult failed_result(Error error);
+
+// The charts laid out and measured as the result; the guests go into texels the tiling leaves
+// empty (lay_out). Charts with invalid faces as stored are cut and laid out again
+// (cut_invalid_charts.h).
+ChartsResult atlas_of(std::vector<SolvedChart> charts, std::vector<int> guests, const Eigen::MatrixXd& unit_V,
+                      const Eigen::MatrixXi& F, double unit, int vertex_rows, const ChartOptions& options);
+
+// The layout as MeshLab stores it: inside the gutter, rounded to float, then measured; counts
+// the triangles no texture shows (smaller than a texel of 4096^2) and those that rounding flips or
+// collapses (a note).
+void store(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, int vertex_rows,
+           const std::vector<std::vector<int>>& faces_of, const ChartOptions& options, ChartsResult& result);
+
+// The measures of `from` (stretch, distortions, flips) into `to`, whose pass and timings stay.
+void copy_measures(const PassMetrics& from, PassMetrics& to);
+
+}  // namespace lowstretch

@@ -1,0 +1,286 @@
+#include "atlas/pack/empty_texels.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "core/stretch.h"
+
+namespace lowstretch {
+
+namespace {
+
+// A chart whose real faces cover this share of its box is seen as its box.
+const double kLeastGuestFill = 0.9;
+// The grid is the texture's texels up to this many per side, coarser beyond (a 65536^2 grid
+// would take 4 GiB).
+const int kMostGridSide = 2048;
+
+// Which cells of a square grid are taken (a chart, or within the gutter of one), and for each
+// cell how many free cells follow it in its row: a box fits where every row it spans has room.
+class TexelGrid {
+ public:
+  explicit TexelGrid(int side)
+      : side_(side), taken_(size_t(side) * size_t(side), 0), run_(taken_.size(), 0), widest_(size_t(side), 0) {}
+  int side() const { return side_; }
+  void take(int x0, int y0, int x1, int y1) {  // cells [x0, x1) x [y0, y1), clipped
+    x0 = std::max(x0, 0), y0 = std::max(y0, 0), x1 = std::min(x1, side_), y1 = std::min(y1, side_);
+    for (int y = y0; y < y1 && x0 < x1; ++y) std::fill(taken_.begin() + long(index(x0, y)), taken_.begin() + long(index(x1, y)), 1);
+  }
+  // Takes every cell within `by` cells of a taken one (a square around each): each row ORed with
+  // its neighbours `by` cells either way, then with the rows `by` above and below (whole rows at
+  // a time, which the compiler vectorizes; a column at a time strides through memory).
+  void grow(int by) {
+    const size_t n = size_t(side_);
+    std::vector<char> row(n);
+    for (size_t y = 0; y < n; ++y) {
+      char* __restrict cells = taken_.data() + y * n;
+      const char* __restrict before = row.data();
+      std::copy(cells, cells + n, row.begin());
+      for (size_t shift = 1; shift <= size_t(by) && shift < n; ++shift) {
+        for (size_t x = 0; x + shift < n; ++x) cells[x] |= before[x + shift];
+        for (size_t x = shift; x < n; ++x) cells[x] |= before[x - shift];
+      }
+    }
+    std::vector<char> grown(taken_.size());
+    for (size_t y = 0; y < n; ++y) {
+      char* out = grown.data() + y * n;
+      const size_t first = y >= size_t(by) ? y - size_t(by) : 0, last = std::min(n - 1, y + size_t(by));
+      std::copy(taken_.data() + first * n, taken_.data() + (first + 1) * n, out);
+      for (size_t near = first + 1; near <= last; ++near) {
+        const char* cells = taken_.data() + near * n;
+        for (size_t x = 0; x < n; ++x) out[x] |= cells[x];
+      }
+    }
+    taken_.swap(grown);
+  }
+  // Free cells: how many free cells start there; taken ones: minus how many taken cells do, so
+  // that a search skips a taken stretch at once.
+  void count_runs(int y0, int y1) {
+    for (int y = std::max(y0, 0); y < std::min(y1, side_); ++y) {
+      int free = 0, taken = 0, widest = 0;
+      for (int x = side_; x-- > 0;) {
+        const bool is_taken = taken_[index(x, y)] != 0;
+        free = is_taken ? 0 : free + 1;
+        taken = is_taken ? taken + 1 : 0;
+        run_[index(x, y)] = is_taken ? -taken : free;
+        widest = std::max(widest, free);
+      }
+      widest_[size_t(y)] = widest;
+    }
+  }
+  bool taken(int x, int y) const { return taken_[index(x, y)] != 0; }
+  // The first place (lowest row, then column; rows up to last_y) where an outline's cells are all
+  // free; false if none. rows[r]: the outline's runs of cells [begin, end) in its row r.
+  bool first_fit(const std::vector<std::vector<std::pair<int, int>>>& rows, int last_y, int& at_x, int& at_y) const {
+    const int height = int(rows.size());
+    int width = 0;
+    std::vector<int> widest_run(rows.size(), 0), order;  // rows with runs, widest run first: they fail soonest
+    for (int r = 0; r < height; ++r) {
+      for (const auto& run : rows[size_t(r)]) {
+        width = std::max(width, run.second);
+        widest_run[size_t(r)] = std::max(widest_run[size_t(r)], run.second - run.first);
+      }
+      if (widest_run[size_t(r)] > 0) order.push_back(r);
+    }
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return widest_run[size_t(a)] > widest_run[size_t(b)]; });
+    for (int y = 0; y + height <= side_ && y <= last_y; ++y) {
+      // Rows whose widest free stretch is too narrow rule out this y at once (most rows of a tiling).
+      if (std::any_of(order.begin(), order.end(), [&](int r) { return widest_[size_t(y + r)] < widest_run[size_t(r)]; })) continue;
+      for (int x = 0; x + width <= side_;) {
+        int skip = 0;
+        for (const int r : order) {
+          for (const auto& run : rows[size_t(r)]) {
+            const int free = run_[index(x + run.first, y + r)];
+            if (free >= run.second - run.first) continue;
+            skip = free < 0 ? -free : free + 1;  // past the taken cells, or past the one that ends the free ones
+            break;
+          }
+          if (skip) break;
+        }
+        if (skip == 0) {
+          at_x = x, at_y = y;
+          return true;
+        }
+        x += skip;
+      }
+    }
+    return false;
+  }
+
+ private:
+  size_t index(int x, int y) const { return size_t(y) * size_t(side_) + size_t(x); }
+  int side_;
+  std::vector<char> taken_;
+  std::vector<int> run_;
+  std::vector<int> widest_;  // per row: its longest stretch of free cells
+};
+
+// Takes every cell that the triangle touches: row by row, the cells under the x-extent of the
+// triangle's part in that row (a convex piece, so every cell under its extent meets it).
+void take_triangle(TexelGrid& grid, const Eigen::Vector2d p[3]) {
+  const double low = std::min({p[0].y(), p[1].y(), p[2].y()}), high = std::max({p[0].y(), p[1].y(), p[2].y()});
+  for (int y = std::max(int(std::floor(low)), 0); y <= std::min(int(std::floor(high)), grid.side() - 1); ++y) {
+    const double y0 = std::max(double(y), low), y1 = std::min(double(y + 1), high);
+    double x0 = std::numeric_limits<double>::infinity(), x1 = -x0;
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector2d& a = p[k];
+      const Eigen::Vector2d& b = p[(k + 1) % 3];
+      if (a.y() >= y0 && a.y() <= y1) x0 = std::min(x0, a.x()), x1 = std::max(x1, a.x());
+      for (const double line : {y0, y1})
+        if ((a.y() - line) * (b.y() - line) < 0) {
+          const double x = a.x() + (b.x() - a.x()) * (line - a.y()) / (b.y() - a.y());
+          x0 = std::min(x0, x), x1 = std::max(x1, x);
+        }
+    }
+    if (x0 <= x1) grid.take(int(std::floor(x0)), y, int(std::floor(x1)) + 1, y + 1);
+  }
+}
+
+// A guest at one quarter turn and texel density: its corners in cells from its box's corner
+// (3 per real face), and the cells its triangles touch as runs per row.
+struct Outline {
+  std::vector<Eigen::Vector2d> corners;
+  std::vector<std::vector<std::pair<int, int>>> rows;
+};
+
+Outline outline_of(const SolvedChart& chart, const Eigen::Vector2d& size, int turns) {
+  const Eigen::Vector2d cells = turns % 2 ? Eigen::Vector2d(size.y(), size.x()) : size;
+  Outline outline;
+  outline.corners.reserve(3 * chart.faces.size());
+  for (size_t j = 0; j < chart.faces.size(); ++j)
+    for (int k = 0; k < 3; ++k) {
+      Eigen::Vector2d q = ((chart.map.uv.row(chart.mesh.F(Eigen::Index(j), k)).transpose() - chart.box.min()).array() /
+                           chart.box.sizes().array()).matrix();
+      for (int t = 0; t < turns; ++t) q = Eigen::Vector2d(1 - q.y(), q.x());  // quarter turns counter-clockwise, as the tiling's
+      outline.corners.push_back(q.cwiseProduct(cells));
+    }
+  const int w = int(std::floor(cells.x())) + 1, h = int(std::floor(cells.y())) + 1;
+  TexelGrid local(std::max(w, h));
+  for (size_t j = 0; j < chart.faces.size(); ++j) take_triangle(local, &outline.corners[3 * j]);
+  outline.rows.resize(size_t(h));
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (local.taken(x, y) && (x == 0 || !local.taken(x - 1, y))) {
+        int end = x + 1;
+        while (end < w && local.taken(end, y)) ++end;
+        outline.rows[size_t(y)].push_back({x, end});
+      }
+  return outline;
+}
+
+// The cell area that charts not filling their box are expected to leave empty.
+double expected_empty_area(const std::vector<SolvedChart>& charts, const std::vector<double>& own_area) {
+  double empty = 0;
+  for (size_t i = 0; i < charts.size(); ++i)
+    if (charts[i].leaves_box_empty()) empty += own_area[i] * (1 - charts[i].fill());
+  return empty;
+}
+
+}  // namespace
+
+double expected_empty_share(const std::vector<SolvedChart>& charts, const std::vector<double>& own_area) {
+  const double total = std::accumulate(own_area.begin(), own_area.end(), 0.0);
+  return total > 0 ? expected_empty_area(charts, own_area) / total : 0;
+}
+
+std::vector<int> charts_to_put_in_empty_texels(const std::vector<SolvedChart>& charts, const std::vector<double>& own_area,
+                                               const GuestChoice& choice) {
+  const double empty = expected_empty_area(charts, own_area);
+  std::vector<int> candidates;
+  for (size_t i = 0; i < charts.size(); ++i)
+    if (choice.any_shape || (!charts[i].leaves_box_empty() && charts[i].fill() >= kLeastGuestFill)) candidates.push_back(int(i));
+  std::stable_sort(candidates.begin(), candidates.end(), [&](int a, int b) { return own_area[size_t(a)] < own_area[size_t(b)]; });
+  std::vector<int> guests;
+  double taken = 0;  // texels of the guests' own triangles
+  for (const int i : candidates) {
+    taken += own_area[size_t(i)] * std::min(1.0, charts[size_t(i)].fill());
+    if (taken > choice.share_of_empty * empty) break;
+    guests.push_back(i);
+  }
+  return guests;
+}
+
+std::vector<int> put_in_empty_texels(const std::vector<SolvedChart>& charts, const std::vector<int>& guests,
+                                     const ChartOptions& options, Eigen::MatrixXd& corner_uv, std::vector<int>& face_chart) {
+  const int side = std::min(options.texture_size, kMostGridSide);
+  const double texel = double(options.texture_size) / side;  // texels per grid cell
+  const int gutter = int(std::ceil(options.gutter / texel));
+  // Layout [0,1]^2 -> grid cells, as store() moves the layout inside the gutter.
+  const double offset = options.gutter / texel, scale = (options.texture_size - 2 * options.gutter) / texel;
+  std::vector<char> is_guest(charts.size(), 0);
+  for (const int i : guests) is_guest[size_t(i)] = 1;
+
+  TexelGrid grid(side);
+  double uv_area = 0, area_3d = 0;  // of the tiled charts, for their texel density
+  for (size_t c = 0; c < charts.size(); ++c) {
+    if (is_guest[c]) continue;
+    area_3d += charts[c].kept.area_3d;
+    for (const int f : charts[c].faces) {
+      Eigen::Vector2d p[3];
+      for (int k = 0; k < 3; ++k) p[k] = offset + scale * corner_uv.block(f, 2 * k, 1, 2).transpose().array();
+      uv_area += std::abs(signed_uv_area(p[0], p[1], p[2]));
+      take_triangle(grid, p);
+    }
+  }
+  // Grown by the gutter; the border's gutter too. From here a taken cell is one a guest may not use.
+  grid.grow(gutter);
+  grid.take(0, 0, side, gutter);
+  grid.take(0, side - gutter, side, side);
+  grid.take(0, 0, gutter, side);
+  grid.take(side - gutter, 0, side, side);
+  grid.count_runs(0, side);
+  const double density = area_3d > 0 ? uv_area / area_3d : 0;  // grid cells^2 per unit of 3D area
+
+  std::vector<int> unplaced;
+  std::vector<int> order = guests;  // largest first: small boxes fill the room large ones leave
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return charts[size_t(a)].kept.area_3d > charts[size_t(b)].kept.area_3d;
+  });
+  for (const int g : order) {
+    const SolvedChart& chart = charts[size_t(g)];
+    const double own = chart.uv_area();
+    if (!(density > 0) || !(own > 0) || !(chart.box.sizes().minCoeff() > 0)) {
+      unplaced.push_back(g);
+      continue;
+    }
+    const Eigen::Vector2d size = chart.box.sizes() * std::sqrt(density * chart.kept.area_3d / own);  // in cells
+    if (!(size.maxCoeff() <= grid.side())) {  // a sliver longer than the texture (or a degenerate map): no room
+      unplaced.push_back(g);
+      continue;
+    }
+    Outline best;
+    int best_x = 0, best_y = 0;
+    bool found = false;
+    // A box looks the same half a turn round; an outline may fit into other room.
+    const int turnings = chart.fill() >= kLeastGuestFill ? 2 : 4;
+    for (int turns = 0; turns < turnings; ++turns) {
+      Outline outline = outline_of(chart, size, turns);
+      int x = 0, y = 0;
+      if (!grid.first_fit(outline.rows, found ? best_y : side, x, y)) continue;
+      if (!found || std::make_pair(y, x) < std::make_pair(best_y, best_x))
+        best_x = x, best_y = y, best = std::move(outline), found = true;
+    }
+    if (!found) {
+      unplaced.push_back(g);
+      continue;
+    }
+    for (size_t r = 0; r < best.rows.size(); ++r)
+      for (const auto& run : best.rows[r])
+        grid.take(best_x + run.first - gutter, best_y + int(r) - gutter, best_x + run.second + gutter, best_y + int(r) + 1 + gutter);
+    grid.count_runs(best_y - gutter, best_y + int(best.rows.size()) + gutter);
+    const Eigen::Vector2d origin(best_x, best_y);
+    for (size_t j = 0; j < chart.faces.size(); ++j) {
+      const int f = chart.faces[j];
+      face_chart[size_t(f)] = g;
+      for (int k = 0; k < 3; ++k) {
+        const Eigen::Vector2d in_cells = origin + best.corners[3 * j + size_t(k)];
+        corner_uv.block(f, 2 * k, 1, 2) = ((in_cells.array() - offset) / scale).matrix().transpose();
+      }
+    }
+  }
+  return unplaced;
+}
+
+}  // namespace lowstretch

@@ -1,0 +1,24 @@
+// Where the charts go: the rectangles tile the unit square (rectangle_layout.h), every chart at
+// the same texel density, each mapped again onto its cell's shape; some small ones may instead go
+// into the texels the tiling leaves empty (empty_texels.h).
+#pragma once
+#include <Eigen/Core>
+#include <vector>
+
+#include "atlas/charts.h"
+#include "atlas/chart_map/solved_chart.h"
+
+namespace lowstretch {
+
+// Each chart's area in the tiling: its 3D area, over the share of its box it fills if it is free
+// or has closed holes (so that every chart has the same texel density).
+std::vector<double> cell_areas(const std::vector<SolvedChart>& charts);
+
+// Every chart but the guests onto its cell of the tiling: mapped again onto a rectangle of the
+// cell's shape (turned a quarter if the chart is wider the other way), then fitted into the cell
+// less half the gutter on each side; then the guests into empty texels, those without room going
+// back into the tiling (ChartsNotPacked if some still find none). Fills corner_uv and face_chart.
+Error lay_out(std::vector<SolvedChart>& charts, const ChartOptions& options, Eigen::Index face_count,
+              const std::vector<int>& guests, ChartsResult& result);
+
+}  // namespace lowstretch
