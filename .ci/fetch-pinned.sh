@@ -44,7 +44,7 @@ fetch_pinned() {
       rm -f "$path.err" && mv "$path.part" "$path"
       return 0
     fi
-    echo "${0##*/}: $url has sha256 $got" >&2
+    echo "${0##*/}: $url: sha256 $got, expected $sha256" >&2
   done
   rm -f "$path.part" "$path.err"
   echo "${0##*/}: cannot get ${path##*/} with sha256 $sha256 from any of: $*" >&2
