@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Our atlas against xatlas and UVAtlas side by side, every column computed by one function
-(atlas_metrics) from each tool's UV as ../shared/reference/atlas_peers.md defines it.
+(atlas_metrics) from each tool's UV, with the definitions of the reference side-by-side
+measurement of xatlas and UVAtlas (listed below).
 
 usage: atlas_table.py --tool build/lowstretch --venv ~/.cache/filter_lowstretch/atlas-venv
                       [--tool-args "--atlas"] [--markdown] [--skip-uvatlas] MESH...
