@@ -65,7 +65,7 @@ std::map<std::string, QVariant> FilterLowStretchPlugin::applyFilter(const QActio
   postConditionMask = unsigned(written);
 
   std::map<std::string, QVariant> values;
-  for (const plugin::OutputValue& v : plugin::output_values(run.result))
+  for (const lowstretch::OutputValue& v : lowstretch::output_values(run.result))
     values[v.name] = v.is_int ? QVariant(v.int_value) : QVariant(v.real_value);
   return values;
 }

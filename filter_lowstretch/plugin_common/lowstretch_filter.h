@@ -16,7 +16,9 @@
 #include "atlas/charts.h"
 #include "core/errors.h"
 #include "core/parameterize.h"
+#include "plugin_common/option_table.h"
 #include "plugin_common/result_lines.h"
+#include "plugin_common/result_table.h"
 #include "vcg_arrays/mesh_arrays.h"
 
 namespace lowstretch {
@@ -27,89 +29,55 @@ extern const char* const kPythonName;  // the pymeshlab name (FilterPlugin::pyth
 extern const char* const kPluginName;
 extern const char* const kFilterInfo;  // HTML shown in MeshLab's filter dialog
 
-// A parameter as MeshLab shows it. `name` is what scripts spell (.mlx; pymeshlab lowercases it).
-struct EnumParameter {
-  const char* name;
-  int default_index;
-  std::vector<const char*> entries;  // in the order of the core's enum
-  const char* label;
-  const char* tooltip;
-};
-struct FloatParameter {
-  const char* name;
-  double default_value;
-  const char* label;
-  const char* tooltip;
-};
-struct IntParameter {
-  const char* name;
-  int default_value;
-  const char* label;
-  const char* tooltip;
-};
-struct BoolParameter {
-  const char* name;
-  bool default_value;
-  const char* label;
-  const char* tooltip;
-};
-// The filter's parameters, in the order the dialog lists them.
-struct Parameters {
-  EnumParameter boundary;
-  FloatParameter exponent;
-  IntParameter max_passes;
-  EnumParameter weights;
-  EnumParameter non_disk;
-  FloatParameter max_stretch;
-  IntParameter texture_size;
-  FloatParameter gutter;
-  BoolParameter refine;
-};
-const Parameters& parameters();
-// An enum parameter's entries as MeshLab's RichEnum takes them.
-QStringList entries(const EnumParameter& p);
-
-// The core's options from the parameter values as MeshLab hands them over. On an invalid value
-// returns an InvalidOption error whose detail names the parameter by its label; options is then
-// left as it was.
-struct ParameterValues {
-  int boundary, weights;
-  double exponent;
-  int max_passes, non_disk;
-  double max_stretch;
-  int texture_size;
-  double gutter;
-  bool refine;
-};
-Error make_options(const ParameterValues& values, ChartOptions& options);
-// The dialog's label of an option the core names in an InvalidOption error ("exponent").
+// An option's dialog entries as MeshLab's RichEnum takes them.
+QStringList entries(const OptionRow& row);
+// The option the core names in an InvalidOption error ("exponent"), by its dialog label.
 std::string label_of(const std::string& option);
+// A dialog value that is no entry of its option's list.
+Error invalid_choice(const OptionRow& row, int value);
 
-// The filter's parameters into a MeshLab RichParameterList, in the dialog's order. Both plugin
-// APIs name their parameter classes alike; Scalar is the float type of the MeshLab build.
+// The filter's parameters (the option table's rows for the filter, in its order) into a MeshLab
+// RichParameterList. Both plugin APIs name their parameter classes alike; Scalar is the float type
+// of the MeshLab build.
 template <class Scalar, class List, class Enum, class Float, class Int, class Bool>
 void add_parameters(List& list) {
-  const Parameters& p = parameters();
-  list.addParam(Enum(p.boundary.name, p.boundary.default_index, entries(p.boundary), p.boundary.label, p.boundary.tooltip));
-  list.addParam(Float(p.exponent.name, Scalar(p.exponent.default_value), p.exponent.label, p.exponent.tooltip));
-  list.addParam(Int(p.max_passes.name, p.max_passes.default_value, p.max_passes.label, p.max_passes.tooltip));
-  list.addParam(Enum(p.weights.name, p.weights.default_index, entries(p.weights), p.weights.label, p.weights.tooltip));
-  list.addParam(Enum(p.non_disk.name, p.non_disk.default_index, entries(p.non_disk), p.non_disk.label, p.non_disk.tooltip));
-  list.addParam(Float(p.max_stretch.name, Scalar(p.max_stretch.default_value), p.max_stretch.label, p.max_stretch.tooltip));
-  list.addParam(Int(p.texture_size.name, p.texture_size.default_value, p.texture_size.label, p.texture_size.tooltip));
-  list.addParam(Float(p.gutter.name, Scalar(p.gutter.default_value), p.gutter.label, p.gutter.tooltip));
-  list.addParam(Bool(p.refine.name, p.refine.default_value, p.refine.label, p.refine.tooltip));
+  const ChartOptions defaults;
+  for (const OptionRow& row : option_table()) {
+    if (row.places != kToolAndFilter) continue;
+    const double value = row.get(defaults);
+    switch (row.kind) {
+      case OptionKind::Choice: list.addParam(Enum(row.script_name, int(value), entries(row), row.label, row.help)); break;
+      case OptionKind::Real: list.addParam(Float(row.script_name, Scalar(value), row.label, row.help)); break;
+      case OptionKind::Whole: list.addParam(Int(row.script_name, int(value), row.label, row.help)); break;
+      case OptionKind::Switch: list.addParam(Bool(row.script_name, value != 0, row.label, row.help)); break;
+    }
+  }
 }
 
-// make_options from the values a MeshLab RichParameterList holds (getEnum, getFloat, getInt,
-// getBool in both APIs).
+// The options from the values a MeshLab RichParameterList holds (getEnum, getFloat, getInt, getBool
+// in both APIs). An enum value outside its list is an InvalidOption error naming the parameter by
+// its label, and options is then left as it was; the core checks the other values.
 template <class List>
 Error options_from(const List& values, ChartOptions& options) {
-  const Parameters& p = parameters();
-  return make_options({values.getEnum(p.boundary.name), values.getEnum(p.weights.name), values.getFloat(p.exponent.name),
-                       values.getInt(p.max_passes.name), values.getEnum(p.non_disk.name), values.getFloat(p.max_stretch.name),
-                       values.getInt(p.texture_size.name), values.getFloat(p.gutter.name), values.getBool(p.refine.name)},
-                      options);
+  ChartOptions made = options;
+  for (const OptionRow& row : option_table()) {
+    if (row.places != kToolAndFilter) continue;
+    double value = 0;
+    switch (row.kind) {
+      case OptionKind::Choice: {
+        const int index = values.getEnum(row.script_name);
+        if (index < 0 || index >= int(row.entries.size())) return invalid_choice(row, index);
+        value = index;
+        break;
+      }
+      case OptionKind::Real: value = values.getFloat(row.script_name); break;
+      case OptionKind::Whole: value = values.getInt(row.script_name); break;
+      case OptionKind::Switch: value = values.getBool(row.script_name) ? 1 : 0; break;
+    }
+    row.set(made, value);
+  }
+  options = made;
+  return {};
 }
 
 // Maps MeshLab's progress callback (percent, stage; false cancels) to the core's.
@@ -123,17 +91,6 @@ std::function<bool(double, const char*)> progress(CallBack* cb) {
 // Log lines, exactly as both adapters write them (and result_lines.h for the run itself).
 std::string header_line(int vertices, int faces, const ChartOptions& options);
 std::string failure_line(const std::string& message);           // "<filter name> failed: <message>"
-
-// The filter's output values (pymeshlab returns them as a dict): metrics of the kept pass (of the
-// whole layout for charts; kept_pass is then -1 and passes counts those of every chart), charts,
-// seam length and coverage.
-struct OutputValue {
-  std::string name;
-  bool is_int;
-  int int_value;
-  double real_value;
-};
-std::vector<OutputValue> output_values(const ChartsResult& result);
 
 // One run on a vcglib mesh: logs the header, converts the live elements, runs the core, logs the
 // result. `error` is empty on success, else the message for the user; the mesh is not touched

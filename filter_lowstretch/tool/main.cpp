@@ -1,5 +1,7 @@
 // lowstretch: the low-stretch parameterization of a disk-like mesh (or of any manifold mesh cut
 // into disk charts), from the command line.
+#include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -7,11 +9,15 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "atlas/charts.h"
 #include "core/parameterize.h"
+#include "plugin_common/option_table.h"
 #include "plugin_common/result_lines.h"
+#include "plugin_common/result_table.h"
+#include "tool/one_blas_thread.h"
 #include "vcg_arrays/mesh_arrays.h"
 #include "tool/mesh_io.h"
 #include "tool/uv_svg.h"
@@ -20,25 +26,12 @@ namespace {
 
 using namespace lowstretch;
 
-const char* kUsage =
-    "usage: lowstretch INPUT [-o OUTPUT.obj|.ply] [--boundary square|circle|natural]\n"
-    "                  [--weights floater|meanvalue|harmonic] [--exponent E] [--max-passes N]\n"
-    "                  [--all-passes] [--solver amg|direct] [--non-disk reject|charts] [--atlas]\n"
-    "                  [--max-stretch S] [--texture-size N] [--gutter G] [--refine] [--json] [--svg UV.svg]\n"
-    "Reads OFF, OBJ or PLY; writes per-corner texture coordinates and stretch as quality.\n"
-    "Every texture coordinate stays G texels (default 2) inside the border of an N x N texture\n"
-    "(default 1024), so that baking a texture of that size never addresses a texel outside it.\n"
-    "A mesh that is not a disk (holes, closed, handles, several parts, non-manifold edges or\n"
-    "vertices) gets an atlas (--non-disk charts, the default); --non-disk reject refuses it.\n"
-    "A disk gets the paper's single chart, or an atlas if that map has a flipped or zero-area\n"
-    "triangle. --atlas makes an atlas of any mesh: a chart whose L2\n"
-    "stretch is above S (default 1.2) is cut in two and mapped again; every chart gets a rectangle\n"
-    "and the rectangles tile the texture, G texels apart. A disk that meets S stays one chart.\n"
-    "--all-passes runs max-passes passes even when the stretch stops falling (benchmarks).\n"
-    "--refine then lowers the kept map's L2 stretch directly (at most 10 times the method's time).\n"
-    "--solver amg (the default) solves each pass by algebraic multigrid, falling back to the sparse\n"
-    "LU of --solver direct for a pass where it does not converge.\n"
-    "Exit codes: 0 done, 1 bad arguments, 2 unreadable input, 3 mesh not usable, 4 cannot write.\n";
+const char* kDescription =
+    "lowstretch: low-stretch texture coordinates for a mesh (OFF, OBJ or PLY), written per corner with the\n"
+    "stretch as quality. A disk gets the paper's single chart; any other mesh (or, with --atlas, any mesh)\n"
+    "an atlas of charts on rectangles tiling the texture. Every coordinate stays --gutter texels inside\n"
+    "a --texture-size texture.\n"
+    "Exit codes: 0 done, 1 bad arguments, 2 unreadable input, 3 mesh not usable, 4 cannot write.";
 
 enum Exit { kDone = 0, kBadArguments = 1, kUnreadable = 2, kRejected = 3, kCannotWrite = 4 };
 
@@ -48,159 +41,111 @@ struct Arguments {
   ChartOptions charts;
 };
 
-bool parse_number(const char* text, double& value) {
-  char* end = nullptr;
-  value = std::strtod(text, &end);
-  return end != text && *end == '\0' && std::isfinite(value);
-}
-
-bool parse_whole_number(const char* text, int& value) {
-  double number = 0;
-  if (!parse_number(text, number) || number != std::floor(number) || std::abs(number) > 1e9) return false;
-  value = int(number);
-  return true;
-}
-
-// Returns an empty string or the reason the arguments are wrong.
-std::string parse(int argc, char** argv, Arguments& a) {
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    const bool has_value = i + 1 < argc;
-    auto value = [&]() { return std::string(argv[++i]); };
-    if (arg == "--json") a.json = true;
-    else if (arg == "--atlas") a.charts.non_disk = NonDisk::Atlas;
-    else if (arg == "--refine") a.charts.disk.refine = true;
-    else if (arg == "--all-passes") a.charts.disk.stop_when_stretch_rises = false;
-    else if (arg == "-h" || arg == "--help") return "help";
-    else if ((arg == "-o" || arg == "--svg" || arg == "--boundary" || arg == "--weights" || arg == "--exponent" ||
-              arg == "--max-passes" || arg == "--non-disk" || arg == "--solver" || arg == "--texture-size" ||
-              arg == "--gutter" || arg == "--max-stretch") && !has_value) return arg + " needs a value";
-    else if (arg == "-o") a.output = value();
-    else if (arg == "--svg") a.svg = value();
-    else if (arg == "--non-disk") {
-      const std::string v = value();
-      if (v != "reject" && v != "charts") return "--non-disk takes reject or charts, not '" + v + "'";
-      if (a.charts.non_disk == NonDisk::Atlas) continue;  // --atlas covers non-disks too
-      a.charts.non_disk = v == "reject" ? NonDisk::Reject : NonDisk::Charts;
+// The command line from the option table (option_table.h), plus the tool's own input and outputs.
+void describe_arguments(CLI::App& app, Arguments& a) {
+  app.add_option("input", a.input, "the mesh: OFF, OBJ or PLY")->required();
+  app.add_option("-o,--output", a.output, "write the mesh with texture coordinates (.obj or .ply)");
+  app.add_option("--svg", a.svg, "draw the texture coordinates coloured by stretch");
+  app.add_flag("--json", a.json, "print the metrics as JSON");
+  CLI::Option* non_disk = nullptr;
+  for (const OptionRow& row : option_table()) {
+    ChartOptions& options = a.charts;
+    const OptionRow* r = &row;
+    CLI::Option* option = nullptr;
+    const std::string help = std::string(row.help) + " Default: " + default_text(row) + ".";
+    switch (row.kind) {
+      case OptionKind::Choice: {
+        const std::vector<std::string> words(row.words.begin(), row.words.end());
+        option = app.add_option_function<std::string>(
+                        row.flag,
+                        [&options, r, words](const std::string& word) {
+                          r->set(options, double(std::find(words.begin(), words.end(), word) - words.begin()));
+                        },
+                        help)
+                     ->check(CLI::IsMember(words));
+        break;
+      }
+      case OptionKind::Real:
+        option = app.add_option_function<double>(row.flag, [&options, r](double v) { r->set(options, v); }, help);
+        break;
+      case OptionKind::Whole:
+        option = app.add_option_function<int>(row.flag, [&options, r](int v) { r->set(options, v); }, help);
+        break;
+      case OptionKind::Switch:
+        option = app.add_flag_callback(row.flag, [&options, r]() { r->set(options, 1); }, help);
+        break;
     }
-    else if (arg == "--solver") {
-      const std::string v = value();
-      if (v == "amg") a.charts.disk.solver.method = LinearSolver::Amg;
-      else if (v == "direct") a.charts.disk.solver.method = LinearSolver::Direct;
-      else return "--solver takes amg or direct, not '" + v + "'";
-    }
-    else if (arg == "--boundary") {
-      const std::string v = value();
-      if (v == "square") a.charts.disk.boundary = BoundaryShape::Square;
-      else if (v == "circle") a.charts.disk.boundary = BoundaryShape::Circle;
-      else if (v == "natural") a.charts.disk.boundary = BoundaryShape::Natural;
-      else return "--boundary takes square, circle or natural, not '" + v + "'";
-    } else if (arg == "--weights") {
-      const std::string v = value();
-      if (v == "floater") a.charts.disk.weights = InitialWeights::Floater;
-      else if (v == "meanvalue") a.charts.disk.weights = InitialWeights::MeanValue;
-      else if (v == "harmonic") a.charts.disk.weights = InitialWeights::Harmonic;
-      else return "--weights takes floater, meanvalue or harmonic, not '" + v + "'";
-    } else if (arg == "--exponent") {
-      if (!parse_number(argv[++i], a.charts.disk.exponent)) return "--exponent takes a number";
-    } else if (arg == "--max-passes") {  // the core checks the ranges (flag_of names them)
-      if (!parse_whole_number(argv[++i], a.charts.disk.max_passes)) return "--max-passes takes a whole number";
-    } else if (arg == "--texture-size") {
-      if (!parse_whole_number(argv[++i], a.charts.texture_size)) return "--texture-size takes a whole number";
-    } else if (arg == "--max-stretch") {
-      if (!parse_number(argv[++i], a.charts.max_stretch)) return "--max-stretch takes a number";
-    } else if (arg == "--gutter") {
-      if (!parse_number(argv[++i], a.charts.gutter)) return "--gutter takes a number";
-    } else if (!arg.empty() && arg[0] == '-') return "unknown option " + arg;
-    else if (a.input.empty()) a.input = arg;
-    else return "more than one input file: " + arg;
+    if (std::string(row.name) == "non_disk") non_disk = option;
   }
-  if (a.input.empty()) return "no input file";
-  return "";
+  app.add_flag_callback("--atlas", [&a]() { a.charts.non_disk = NonDisk::Atlas; }, "the same as --non-disk atlas")
+      ->excludes(non_disk);
 }
 
 // The tool's flag for an option the core names in an InvalidOption error.
 std::string flag_of(const std::string& option) {
-  if (option == "exponent") return "--exponent";
-  if (option == "max_passes") return "--max-passes";
-  if (option == "texture_size") return "--texture-size";
-  if (option == "gutter") return "--gutter";
-  if (option == "max_stretch") return "--max-stretch";
-  return option;
+  const OptionRow* row = option_named(option);
+  return row != nullptr ? row->flag : option;
 }
 
-// JSON has no infinity: a flipped map's stretch is written as null.
-std::string number(double v) {
-  if (!std::isfinite(v)) return "null";
-  std::ostringstream s;
-  s.precision(10);
-  s << v;
-  return s.str();
+// JSON has no infinity: a flipped map's stretch is written as null (nlohmann writes non-finite
+// numbers as null).
+nlohmann::ordered_json pass_json(const PassMetrics& p) {
+  return {{"pass", p.pass}, {"l2_stretch", p.l2_stretch}, {"linf_stretch", p.linf_stretch},
+          {"edge_distortion", p.edge_distortion}, {"angle_distortion", p.angle_distortion},
+          {"area_distortion", p.area_distortion}, {"flipped", p.flipped}, {"degenerate", p.degenerate},
+          {"seconds", p.seconds}, {"seconds_assembly", p.seconds_assembly},
+          {"seconds_factorization", p.seconds_factorization}, {"seconds_solve", p.seconds_solve},
+          {"seconds_metrics", p.seconds_metrics}, {"solver", to_string(p.solver)},
+          {"solver_fell_back", p.solver_fell_back}, {"solver_iterations", p.solver_iterations},
+          {"solver_residual", p.solver_residual}};
 }
 
-std::string quoted(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (c == '\n') { out += "\\n"; continue; }
-    out += c;
-  }
-  return out + "\"";
+nlohmann::ordered_json chart_json(const Chart& c) {
+  nlohmann::ordered_json chart = {{"faces", c.faces}, {"closed_holes", c.closed_holes}, {"seam_length", c.seam_length},
+                                  {"l2_stretch", c.l2_stretch}, {"linf_stretch", c.linf_stretch},
+                                  {"above_bound", c.above_bound}};
+  if (c.above_bound) chart["kept_whole"] = c.kept_whole;
+  chart["chosen_pass"] = c.chosen_pass;
+  chart["passes"] = c.passes;
+  return chart;
 }
 
-std::string pass_json(const PassMetrics& p) {
-  std::ostringstream o;
-  o << "{\"pass\": " << p.pass << ", \"l2_stretch\": " << number(p.l2_stretch)
-    << ", \"linf_stretch\": " << number(p.linf_stretch) << ", \"edge_distortion\": " << number(p.edge_distortion)
-    << ", \"angle_distortion\": " << number(p.angle_distortion) << ", \"area_distortion\": " << number(p.area_distortion)
-    << ", \"flipped\": " << p.flipped << ", \"degenerate\": " << p.degenerate << ", \"seconds\": " << number(p.seconds)
-    << ", \"seconds_assembly\": " << number(p.seconds_assembly) << ", \"seconds_factorization\": " << number(p.seconds_factorization)
-    << ", \"seconds_solve\": " << number(p.seconds_solve) << ", \"seconds_metrics\": " << number(p.seconds_metrics)
-    << ", \"solver\": \"" << to_string(p.solver) << "\", \"solver_fell_back\": " << (p.solver_fell_back ? "true" : "false")
-    << ", \"solver_iterations\": " << p.solver_iterations << ", \"solver_residual\": " << number(p.solver_residual) << "}";
-  return o.str();
-}
-
-// A disk's passes; always the map as written (layout, coverage, tiny triangles); with
-// --non-disk charts also the charts.
+// The input, every option (by its core name), a disk's passes, the map as written, the summary of
+// result_table.h, and for charts each chart and each pass over all charts.
 void print_json(const Arguments& a, const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartsResult& c) {
-  std::ostringstream o;
-  o << "{\"input\": " << quoted(a.input) << ", \"vertices\": " << V.rows() << ", \"faces\": " << F.rows()
-    << ", \"boundary\": \"" << to_string(a.charts.disk.boundary) << "\", \"weights\": \"" << to_string(a.charts.disk.weights)
-    << "\", \"exponent\": " << number(a.charts.disk.exponent)
-    << ", \"solver\": \"" << to_string(a.charts.disk.solver.method) << "\", \"max_passes\": " << a.charts.disk.max_passes;
+  nlohmann::ordered_json o = {{"input", a.input}, {"vertices", V.rows()}, {"faces", F.rows()}};
+  for (const OptionRow& row : option_table()) {
+    const double value = row.get(a.charts);
+    if (row.kind == OptionKind::Choice) o[row.name] = row.words.at(size_t(value));
+    else if (row.kind == OptionKind::Switch) o[row.name] = value != 0;
+    else if (row.kind == OptionKind::Whole) o[row.name] = int(value);
+    else o[row.name] = value;
+  }
+  o["input_is_disk"] = c.input_is_disk;
   if (c.input_is_disk) {
-    o << ",\n \"passes\": [";
-    for (size_t i = 0; i < c.disk_passes.size(); ++i) o << (i ? ",\n  " : "\n  ") << pass_json(c.disk_passes[i]);
-    o << "],\n \"chosen_pass\": " << c.chosen_pass << ", \"stop_reason\": " << quoted(to_string(c.stop_reason));
+    nlohmann::ordered_json passes = nlohmann::ordered_json::array();
+    for (const PassMetrics& p : c.disk_passes) passes.push_back(pass_json(p));
+    o["passes"] = passes;
+    o["chosen_pass"] = c.chosen_pass;
+    o["stop_reason"] = to_string(c.stop_reason);
   }
-  // The map as written (float texture coordinates inside the gutter), disk or charts.
-  o << ",\n \"texture_size\": " << a.charts.texture_size << ", \"gutter\": " << number(a.charts.gutter)
-    << ", \"coverage\": " << number(c.coverage) << ", \"subtexel_triangles\": " << c.subtexel_triangles
-    << ", \"float_collapsed\": " << c.float_collapsed << ",\n \"layout\": " << pass_json(c.layout);
-  if (a.charts.non_disk != NonDisk::Reject) {
-    o << ",\n \"non_disk\": \"" << to_string(a.charts.non_disk) << "\", \"input_is_disk\": " << (c.input_is_disk ? "true" : "false")
-      << ", \"max_stretch\": " << number(a.charts.max_stretch) << ", \"chart_count\": " << c.charts.size()
-      << ", \"seam_length\": " << number(c.seam_length) << ", \"efficiency\": " << number(texture_efficiency(c))
-      << ", \"max_chart_stretch\": " << number(largest_chart_stretch(c)) << ",\n \"charts\": [";
-    for (size_t i = 0; i < c.charts.size(); ++i) {
-      const Chart& ch = c.charts[i];
-      o << (i ? ",\n  " : "\n  ") << "{\"faces\": " << ch.faces << ", \"closed_holes\": " << ch.closed_holes
-        << ", \"seam_length\": " << number(ch.seam_length) << ", \"l2_stretch\": " << number(ch.l2_stretch)
-        << ", \"linf_stretch\": " << number(ch.linf_stretch) << ", \"above_bound\": " << (ch.above_bound ? "true" : "false")
-        << (ch.above_bound ? ", \"kept_whole\": " + quoted(ch.kept_whole) : std::string())
-        << ", \"chosen_pass\": " << ch.chosen_pass << ", \"passes\": " << ch.passes << "}";
-    }
-    o << "],\n \"layout_passes\": [";
-    for (size_t i = 0; i < c.passes.size(); ++i)
-      o << (i ? ", " : "") << "{\"pass\": " << c.passes[i].pass << ", \"l2_stretch\": " << number(c.passes[i].l2_stretch)
-        << ", \"flipped\": " << c.passes[i].flipped << ", \"degenerate\": " << c.passes[i].degenerate << "}";
-    o << "]";
+  o["layout"] = pass_json(c.layout);
+  for (const ResultRow& row : result_table()) {
+    if (row.json_key == nullptr) continue;
+    const double value = row.get(c);
+    if (row.is_int) o[row.json_key] = static_cast<long long>(value);
+    else o[row.json_key] = value;
   }
-  o << ",\n \"seconds_total\": " << number(c.seconds_total) << ", \"notes\": [";
-  for (size_t i = 0; i < c.notes.size(); ++i) o << (i ? ", " : "") << quoted(c.notes[i]);
-  o << "]}\n";
-  std::cout << o.str();
+  if (!c.input_is_disk) {
+    nlohmann::ordered_json charts = nlohmann::ordered_json::array(), passes = nlohmann::ordered_json::array();
+    for (const Chart& chart : c.charts) charts.push_back(chart_json(chart));
+    for (const LayoutPass& p : c.passes)
+      passes.push_back({{"pass", p.pass}, {"l2_stretch", p.l2_stretch}, {"flipped", p.flipped}, {"degenerate", p.degenerate}});
+    o["charts"] = charts;
+    o["layout_passes"] = passes;
+  }
+  o["notes"] = c.notes;
+  std::cout << o.dump(1) << "\n";
 }
 
 // The texture the output names: the project's checkerboard, copied beside the output once the
@@ -218,9 +163,17 @@ void place_texture(const std::string& output) {
 
 int main(int argc, char** argv) {
   Arguments args;
-  const std::string problem = parse(argc, argv, args);
-  if (problem == "help") { std::cout << kUsage; return kDone; }
-  if (!problem.empty()) { std::cerr << "lowstretch: " << problem << "\n" << kUsage; return kBadArguments; }
+  CLI::App app(kDescription, "lowstretch");
+  describe_arguments(app, args);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& help) {
+    std::cout << app.help();
+    return kDone;
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "lowstretch: " << e.what() << "\n(lowstretch --help lists the options)\n";
+    return kBadArguments;
+  }
 
   ToolMesh mesh;
   std::string error;
@@ -229,11 +182,13 @@ int main(int argc, char** argv) {
   Eigen::MatrixXi F;
   const ArrayRows rows = mesh_to_arrays(mesh, V, F);
 
+  // The atlas solves charts on both cores, where OpenBLAS's own threads would only spin.
+  const OneBlasThread one_blas_thread;
   const ChartsResult result = parameterize_charts(V, F, args.charts);
   if (result.error) {
     // An option value that the core refuses is a bad argument, as the usage says.
     if (result.error.code == ErrorCode::InvalidOption) {
-      std::cerr << "lowstretch: " << message(result.error, flag_of) << "\n" << kUsage;
+      std::cerr << "lowstretch: " << message(result.error, flag_of) << "\n";
       return kBadArguments;
     }
     std::cerr << "lowstretch: " << args.input << ": " << message(result.error)

@@ -1,0 +1,126 @@
+#include "plugin_common/option_table.h"
+
+#include <cctype>
+#include <sstream>
+
+namespace lowstretch {
+
+namespace {
+
+std::vector<OptionRow> make_table() {
+  return {
+      {"boundary", "--boundary", "boundaryShape", "Boundary shape", OptionKind::Choice,
+       {"square", "circle", "natural"}, {"Square", "Circle", "Natural"}, "", kToolAndFilter,
+       "Where the boundary loop goes: the unit square (the paper's choice), the circle (strictly convex: no pass "
+       "can flip a triangle), or the free boundary of a conformal map (least distortion at the boundary; flips "
+       "are possible and are reported).",
+       [](const ChartOptions& o) { return double(o.disk.boundary); },
+       [](ChartOptions& o, double v) { o.disk.boundary = BoundaryShape(int(v)); }},
+      {"exponent", "--exponent", "exponent", "Exponent", OptionKind::Real, {}, {}, "(0, 1]", kToolAndFilter,
+       "eta: each pass divides the weights by the vertex stretch to the power eta. 1 is the paper's choice; "
+       "smaller values redistribute the stretch more gently.",
+       [](const ChartOptions& o) { return o.disk.exponent; }, [](ChartOptions& o, double v) { o.disk.exponent = v; }},
+      {"max_passes", "--max-passes", "maxPasses", "Max passes", OptionKind::Whole, {}, {}, "0 to 1000", kToolAndFilter,
+       "At most this many reweighting passes; the run stops earlier when the L2 stretch stops falling. 0 gives "
+       "the initial map only, 1 gives U1.",
+       [](const ChartOptions& o) { return double(o.disk.max_passes); },
+       [](ChartOptions& o, double v) { o.disk.max_passes = int(v); }},
+      {"weights", "--weights", "initialWeights", "Initial weights", OptionKind::Choice,
+       {"floater", "meanvalue", "harmonic"}, {"Floater shape-preserving", "Mean value", "Harmonic"}, "",
+       kToolAndFilter,
+       "Weights of the initial map U0: Floater's shape-preserving weights (the paper's choice), mean value "
+       "weights, or harmonic (cotangent) weights, which can be negative and are offered for comparison only.",
+       [](const ChartOptions& o) { return double(o.disk.weights); },
+       [](ChartOptions& o, double v) { o.disk.weights = InitialWeights(int(v)); }},
+      {"non_disk", "--non-disk", "nonDisk", "Non-disk input", OptionKind::Choice, {"reject", "charts", "atlas"},
+       {"Reject", "Make charts", "Atlas for any mesh"}, "", kToolAndFilter,
+       "What to do with a mesh that is not a disk (holes, closed, handles, several parts, non-manifold edges or "
+       "vertices): reject it with the reason, or make charts (the default): a low-stretch atlas whose charts "
+       "stretch at most Max chart stretch, each on a rectangle, the rectangles tiling the texture a gutter apart. "
+       "Charts keep a disk as the paper's single chart while that map has no flipped or zero-area triangle; "
+       "atlas cuts a disk too when that uses the texture better. The mesh itself is never changed.",
+       [](const ChartOptions& o) { return double(o.non_disk); },
+       [](ChartOptions& o, double v) { o.non_disk = NonDisk(int(v)); }},
+      {"max_stretch", "--max-stretch", "maxStretch", "Max chart stretch", OptionKind::Real, {}, {}, "at least 1",
+       kToolAndFilter,
+       "Charts: a chart whose L2 stretch is above this is cut in two. Lower gives less stretch, more charts and "
+       "longer seams.",
+       [](const ChartOptions& o) { return o.max_stretch; }, [](ChartOptions& o, double v) { o.max_stretch = v; }},
+      {"texture_size", "--texture-size", "textureSize", "Texture size", OptionKind::Whole, {}, {}, "8 to 65536",
+       kToolAndFilter,
+       "Side in texels of the texture the map is made for (the size you give Transfer: Vertex Color to "
+       "Texture): the gutter is measured in its texels.",
+       [](const ChartOptions& o) { return double(o.texture_size); },
+       [](ChartOptions& o, double v) { o.texture_size = int(v); }},
+      {"gutter", "--gutter", "gutter", "Gutter (texels)", OptionKind::Real, {}, {},
+       "0.5 to an eighth of the texture size", kToolAndFilter,
+       "Every texture coordinate stays this many texels inside the border of the texture, and charts this far "
+       "apart, so that baking and mipmaps never address a texel outside it.",
+       [](const ChartOptions& o) { return o.gutter; }, [](ChartOptions& o, double v) { o.gutter = v; }},
+      {"refine", "--refine", "refineStretch", "Refine stretch", OptionKind::Switch, {}, {}, "", kToolAndFilter,
+       "After the paper's passes, lower the L2 stretch further by minimizing it directly (projected Newton, "
+       "boundary fixed, no triangle flips), for at most 10 times the time the passes took.",
+       [](const ChartOptions& o) { return double(o.disk.refine); },
+       [](ChartOptions& o, double v) { o.disk.refine = v != 0; }},
+      {"solver", "--solver", "", "", OptionKind::Choice, {"amg", "direct"}, {}, "", kToolOnly,
+       "How each pass is solved: algebraic multigrid with BiCGStab (falling back to the sparse LU for a pass "
+       "where it does not converge), or the sparse LU (UMFPACK).",
+       [](const ChartOptions& o) { return double(o.disk.solver.method); },
+       [](ChartOptions& o, double v) { o.disk.solver.method = LinearSolver(int(v)); }},
+      {"all_passes", "--all-passes", "", "", OptionKind::Switch, {}, {}, "", kToolOnly,
+       "Run Max passes passes even when the stretch stops falling (benchmarks).",
+       [](const ChartOptions& o) { return double(!o.disk.stop_when_stretch_rises); },
+       [](ChartOptions& o, double v) { o.disk.stop_when_stretch_rises = v == 0; }},
+  };
+}
+
+}  // namespace
+
+const std::vector<OptionRow>& option_table() {
+  static const std::vector<OptionRow> table = make_table();
+  return table;
+}
+
+const OptionRow* option_named(const std::string& name) {
+  for (const OptionRow& row : option_table())
+    if (name == row.name) return &row;
+  return nullptr;
+}
+
+std::string default_text(const OptionRow& row) {
+  const double value = row.get(ChartOptions());
+  switch (row.kind) {
+    case OptionKind::Choice: return row.words.at(size_t(value));
+    case OptionKind::Switch: return value != 0 ? "on" : "off";
+    default: {
+      std::ostringstream text;
+      text << value;
+      return text.str();
+    }
+  }
+}
+
+std::string options_markdown() {
+  std::ostringstream md;
+  md << "| tool | MeshLab (script name) | pymeshlab | values | default | what it does |\n"
+        "|---|---|---|---|---|---|\n";
+  for (const OptionRow& row : option_table()) {
+    std::string values = row.range;
+    if (row.kind == OptionKind::Switch) values = "on, off";
+    for (size_t i = 0; i < row.words.size(); ++i)
+      values += (i ? ", " : "") + std::string(row.words[i]) +
+                (row.entries.empty() ? "" : std::string(" (") + row.entries[i] + ")");
+    std::string script = row.places == kToolAndFilter ? std::string(row.label) + " (`" + row.script_name + "`)" : "-";
+    std::string python = "-";
+    if (row.places == kToolAndFilter) {
+      python = row.script_name;
+      for (char& c : python) c = char(std::tolower(static_cast<unsigned char>(c)));
+      python = "`" + python + "`";
+    }
+    md << "| `" << row.flag << "` | " << script << " | " << python << " | " << values << " | " << default_text(row)
+       << " | " << row.help << " |\n";
+  }
+  return md.str();
+}
+
+}  // namespace lowstretch
