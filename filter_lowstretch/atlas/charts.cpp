@@ -99,18 +99,16 @@ double best_possible_efficiency(const std::vector<SolvedChart>& parts) {
 // An atlas this much more efficient than that bound skips laying out one chart per part.
 const double kClearlyBetter = 1.25;
 
-// Normals more than this apart make an edge sharp. On CGAL's CAD parts (efficiency cut along
-// sharp edges at 60 / 80 / 85 degrees, with kFreeFacesMustPay 1): pinion 0.780 / 0.878 / 0.878, fandisk 0.704 / 0.759 / 0.739;
-// couplingdown, rotor, anchor, joint the same at all three.
+// Normals more than this apart make an edge sharp: a lower angle cuts curved faces into more
+// charts, a higher one leaves sharp edges uncut.
 const double kSharpEdgeDegrees = 80;
 // The share of the area that the sharp edges must split off the parts' largest patches for the
-// model to be tried cut along them: CGAL's CAD parts 0.25 or more, its statues and animals 0.001
-// or less (their sharp edges are creases and spikes).
+// model to be tried cut along them: CAD parts split off far more, statues and animals far less
+// (their sharp edges are creases and spikes).
 const double kFacesShare = 0.01;
 // A face of a model cut along its sharp edges is mostly a plane, a cylinder or a fillet, which a free
 // map keeps with little stretch; so a free map need pay less than on a statue. Which of these pays
-// best depends on the part, so both are laid out (tool's efficiency, free maps paying 1 / 2 / either:
-// joint 0.814 / 0.670 / 0.814, couplingdown 0.556 / 0.528 / 0.556, anchor 0.428 / 0.474 / 0.474).
+// best depends on the part, so both are laid out.
 const double kFreeFacesMustPay[] = {2, 1};
 // How a model made of faces is cut: the patches between edges sharper than `degrees`, cut by
 // stretch to this share of the bound's excess over 1 (0.5: 1.2 -> 1.1).
@@ -118,11 +116,8 @@ struct FacesCut {
   double degrees, excess_kept;
 };
 // Its faces are mostly flat, so more cuts leave charts that fill their rectangles with little
-// stretch (tool's efficiency cut to 1.2 / 1.1: rotor 0.486 / 0.599, dragknob 0.640 / 0.833, fandisk
-// 0.759 / 0.798). Edges sharper than 30 degrees also part a large face from its fillets, whose
-// rectangles stretched (couplingdown 0.556 -> 0.643, anchor 0.474 -> 0.552, turbine 0.611 -> 0.627;
-// instead of the second cut, fandisk fell 0.807 -> 0.784; at 20 or 45 degrees couplingdown reached
-// 0.600 or 0.560).
+// stretch. Edges sharper than 30 degrees also part a large face from its fillets, which stretch
+// on a rectangle shared with it.
 const FacesCut kFacesCuts[] = {{kSharpEdgeDegrees, 1}, {kSharpEdgeDegrees, 0.5}, {30, 0.5}};
 // Whether atlas a uses the texture better than b, or as well with fewer flipped and zero-area triangles.
 bool more_efficient(const ChartsResult& a, const ChartsResult& b) {
@@ -131,9 +126,8 @@ bool more_efficient(const ChartsResult& a, const ChartsResult& b) {
           a.layout.flipped + a.layout.degenerate < b.layout.flipped + b.layout.degenerate);
 }
 
-// A cut along gentler edges is tried only while the best atlas has a lower efficiency: it took a
-// quarter more time (rotor 0.18 -> 0.24 s, fandisk 1.05 -> 1.33 s, medians of 5) and gained
-// nothing on the parts above it (fandisk 0.807, pinion 0.894, joint 0.814, dragknob 0.833).
+// A cut along gentler edges is tried only while the best atlas has a lower efficiency: it costs
+// time and does not improve an atlas that already uses the texture well.
 const double kGentlerCutBelow = 0.7;
 
 // Whether the sharp edges split the parts into faces of their own (a CAD model), rather than nick
@@ -180,9 +174,8 @@ ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, cons
       return options.disk.progress(reached, stage);
     };
   // Each atlas tried is tiled; the charts of the one kept so far are kept too when its tiling is
-  // expected to leave texels empty: small charts are put into them on the kept atlas only. (Boxes
-  // put into every atlas tried gave the anchor 0.691 instead of 0.681 and the spool 0.674 instead
-  // of 0.633, but took the rotor 0.22 -> 0.32 s and the joint 0.08 -> 0.14 s, one run each.)
+  // expected to leave texels empty: small charts are put into them on the kept atlas only
+  // (filling every atlas tried can find a better one, but costs much more time).
   std::vector<SolvedChart> kept, tried;
   const auto tile = [&](std::vector<SolvedChart> charts) {
     const bool leaves_room = expected_empty_share(charts, cell_areas(charts)) >= kLeastEmptyShare;
@@ -192,10 +185,8 @@ ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, cons
   ChartsResult result;
   bool made = false;  // whether `result` holds an atlas yet
   // A model made of faces (a CAD part) is cut along its sharp edges. Where its parts, mapped
-  // whole, are above the bound, it is not also cut by stretch alone: that atlas lost to the sharp
-  // edges' on CGAL's eight CAD parts by 0.09 to 0.78 of efficiency (fandisk 0.807 against 0.721,
-  // joint 0.815 against 0.033) and took 20-45% of their time (fandisk 0.69 -> 0.45 s without it,
-  // medians of 5; the same atlas on all 166 meshes of CGAL's demo data and the shared ones).
+  // whole, are above the bound, it is not also cut by stretch alone: on CAD parts that atlas
+  // loses to the sharp edges' and only costs time.
   const std::vector<std::vector<int>> patches = patches_between_sharp_edges(unit_V, F, kSharpEdgeDegrees);
   const bool made_of_faces = patches.size() > part_count && has_faces_of_its_own(unit_V, F, component, patches);
   const auto cut_along_sharp_edges = [&]() -> Error {

@@ -41,19 +41,15 @@ struct ChartOptions {
   int max_charts = 100000;             // at least 1
   // A chart far above the bound has its largest part cut again before any part is mapped, once
   // per doubling of its L2 stretch over max_stretch, at most this often (0: every part is mapped
-  // before it is cut; the 15 bench meshes give the same atlas either way, the armadillo 1.4 times
-  // sooner with 4).
+  // before it is cut, which is slower and gives the same atlas).
   int most_cuts_ahead = 4;             // 0 to 16
 };
-// Smaller charts cut coarse models better (cow efficiency 0.516 at 50, 0.624 at 15) at the cost
-// of more seams and gutters (the 769k-face scan: 0.617 at 50, 0.607 at 15, 0.592 at 8).
+// Smaller charts cut coarse models better, at the cost of more seams and gutters.
 constexpr int kSmallestChart = 15;
 // A smaller chart is cut after all when it stretches more than kSmallCutAbove times the bound and
-// has kSmallestCutChart faces or more: a spike's tip or a crease left in a small part stretches so
-// much (the diplodocus: parts of 7-34 faces at L2 15-1364 on their rectangles) that it raised the
-// whole atlas's L2 from about 1.15 to 1.44. Cutting those took the diplodocus's efficiency 0.468 ->
-// 0.722 and the mannequin devil's 0.687 -> 0.728; from 2 faces instead of 8 a CAD blade was cut
-// into 1296 charts, which no tiling could hold.
+// has kSmallestCutChart faces or more: a spike's tip or a crease left in a small part can stretch
+// so much that it raises the L2 stretch of the whole atlas. Cutting smaller charts too would split
+// a finely meshed CAD part into more charts than a tiling can hold.
 constexpr double kSmallCutAbove = 2;
 constexpr int kSmallestCutChart = 8;  // faces
 

@@ -16,8 +16,8 @@ std::vector<double> boundary_arc_lengths(const DiskMesh& disk) {
     total += length[i];
   }
   // A zero-length edge (scans have them) still moves on by a thousandth of a mean edge, so that
-  // its two ends stay apart when the texture is stored as float (at a millionth they were 1e-8
-  // apart on a 400-edge boundary: its triangle collapsed).
+  // its two ends stay apart when the texture is stored as float; a smaller step can round them
+  // together and collapse their triangle.
   const double floor = total > 0 ? 1e-3 * total / double(n) : 1.0;
   for (size_t i = 0; i < n; ++i) arc[i + 1] = arc[i] + std::max(length[i], floor);
   return arc;
@@ -40,8 +40,8 @@ namespace {
 
 // Outward bulge along a side whose kinks are at `kink_t` (each in (0,1)): a sum of tents, each zero
 // at the corners and bending once at its kink, so concave, scaled so that its largest value is
-// kKinkBulge. Zero without kinks. Its peak is found once per side: found again for every vertex,
-// sides with thousands of kinks (CGAL's cheese, one part mapped whole) took 91% of a 33 s atlas.
+// kKinkBulge. Zero without kinks. Its peak is found once per side: finding it again for every
+// vertex would be quadratic on a side with thousands of kinks.
 class SideBulge {
  public:
   explicit SideBulge(std::vector<double> kink_t) : kink_t_(std::move(kink_t)) {

@@ -24,12 +24,12 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 using Backend = amgcl::backend::builtin<double>;
-// The coarsest level, solved by amgcl's own dense LU: its default (3000 unknowns) made that solve
-// the slowest part of every cycle on meshes of 5k-50k vertices.
+// The coarsest level, solved by amgcl's own dense LU: at its default (3000 unknowns) that dense
+// solve is the slowest part of every cycle.
 constexpr unsigned kCoarseEnough = 1500;
 
 // Below this many unknowns METIS's ordering costs more than the fill it saves: AMD there (an
-// atlas of small charts: holes3_head 0.129 -> 0.096 s, the blobby parts 0.064 -> 0.051 s).
+// atlas solves many small charts).
 constexpr int kMetisMinimumRows = 3000;
 
 using AmgSolver = amgcl::make_solver<
@@ -118,8 +118,8 @@ void LaplacianSolver::scatter(const Eigen::MatrixXd& x, Eigen::MatrixXd& uv) con
 
 // u and v on one thread each: a hierarchy keeps per-level work vectors, so two concurrent solves
 // need two hierarchies; building both at once costs the wall time of one. Every pass builds its
-// own: an earlier pass's hierarchy, tried on later passes, needed about twice the iterations at
-// this tolerance and cost more than it saved.
+// own: an earlier pass's hierarchy, reused on later passes, needs more iterations at this
+// tolerance than its setup saves.
 bool LaplacianSolver::solve_amg(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& x) {
   const int n = int(matrix_.rows());
   const int* ptr = matrix_.outerIndexPtr();
@@ -184,8 +184,8 @@ bool LaplacianSolver::solve_direct(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& 
   Clock::time_point start = Clock::now();
   const Eigen::SparseMatrix<double> column_major = matrix_;  // UMFPACK takes compressed columns
   if (!analyzed_) {
-    // METIS leaves about half the fill of the default AMD ordering on these meshes (small systems
-    // aside, kMetisMinimumRows). The matrix is diagonally dominant, so the factorization is
+    // METIS leaves less fill than the default AMD ordering on these meshes (small systems aside,
+    // kMetisMinimumRows). The matrix is diagonally dominant, so the factorization is
     // accurate without iterative refinement (which would triple the cost of a solve).
     lu_.umfpackControl()(UMFPACK_ORDERING) = matrix_.rows() < kMetisMinimumRows ? UMFPACK_ORDERING_AMD : UMFPACK_ORDERING_METIS;
     lu_.umfpackControl()(UMFPACK_IRSTEP) = 0;

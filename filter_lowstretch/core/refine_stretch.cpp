@@ -210,7 +210,8 @@ Eigen::MatrixXd refine_stretch(const DiskMesh& disk, const Eigen::MatrixXd& uv0,
   if (count == 0) return uv;
   HessianLayout layout = hessian_layout(disk, unknown, count);
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> newton;  // SuiteSparse's CHOLMOD
-  // METIS: a costlier analysis (done once) than CHOLMOD's default AMD, for about 30% less fill.
+  // METIS: a costlier analysis (done once) than CHOLMOD's default AMD, for less fill in every
+  // factorization.
   newton.cholmod().nmethods = 1;
   newton.cholmod().method[0].ordering = CHOLMOD_METIS;
   newton.analyzePattern(layout.H);

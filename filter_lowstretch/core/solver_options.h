@@ -11,10 +11,10 @@ enum class LinearSolver {
 
 struct SolverOptions {
   LinearSolver method = LinearSolver::Amg;
-  // Relative residual |A x - b| / |b| the Krylov iteration stops at: within 1e-7 in UV of the
-  // direct solve on the shared disks (1e-8 left 1e-4 on the camel head). Its residual is a
-  // recurrence: the true one is checked, and above residual_accepted the direct solve takes
-  // over, as it does after max_iterations (about 4 times what a pass needs).
+  // Relative residual |A x - b| / |b| the Krylov iteration stops at: tight enough that the UV
+  // matches the direct solve's, where a looser one can leave vertices visibly off. Its residual
+  // is a recurrence: the true one is checked, and above residual_accepted the direct solve takes
+  // over, as it does after max_iterations (several times what a pass needs).
   double tolerance = 1e-10;
   double residual_accepted = 1e-8;
   int max_iterations = 50;

@@ -19,11 +19,10 @@ const double kInf = std::numeric_limits<double>::infinity();
 
 // How many more times the largest part of a chart is cut before any part is mapped: a chart far
 // above the bound is mostly a body with protrusions, which the cuts take off one at a time, and
-// mapping the body again after each took most of the time (the armadillo's body, 47,578 faces
-// down to 22,226, was mapped in 7 rounds). One more cut per doubling of the L2 stretch over the
-// bound; none for a chart with flipped triangles, whose stretch says little, unless they are a
-// few slivers of a reconstruction (under kFewInvalid of its faces): then the stretch of the others
-// (a genus-35 scan's body was mapped 9 times, 444k down to 285k vertices, one cut each).
+// mapping the body again after each would take most of the time. One more cut per doubling of
+// the L2 stretch over the bound; none for a chart with flipped triangles, whose stretch says
+// little, unless they are a few slivers of a reconstruction (under kFewInvalid of its faces):
+// then the stretch of the others counts.
 const double kFewInvalid = 1e-3;
 int cuts_ahead(const ChartPass& p, size_t faces, const ChartOptions& options) {
   const bool few_invalid = double(p.flipped + p.degenerate) <= kFewInvalid * double(faces);
@@ -32,13 +31,11 @@ int cuts_ahead(const ChartPass& p, size_t faces, const ChartOptions& options) {
   return std::min(options.most_cuts_ahead, std::max(0, int(std::floor(std::log2(l2 / options.max_stretch)))));
 }
 // Only parts this large are cut ahead: smaller ones are cheap to map, and cutting them unmapped
-// changes atlases. From 30 faces the cow's efficiency fell 0.619 -> 0.611; from 1000, the 15 bench
-// meshes kept their atlas but Atlas.CutsAheadGiveTheSameAtlasAsMappingEveryPart's ball did not;
-// from 3000 all keep theirs (the armadillo 3.27 -> 2.40 s, median of 5; 2.25 s from 1000).
+// can change the atlas.
 const int kLeastCutAhead = 3000;  // faces
 // And only a body, a part that kept two thirds of the faces of the chart it was cut from: the parts
-// of a chart cut nearer its middle may meet the bound (the 769k-face scan without this rule: 2576
-// charts and efficiency 0.601 instead of 2344 and 0.607; with it, 2400 and 0.607).
+// of a chart cut nearer its middle may meet the bound, and cutting them unmapped makes more charts
+// for a worse atlas.
 const double kLeastBodyShare = 0.67;
 
 // A chart's cut: its parts, then the parts of its largest part cut ahead, and so on; parent: -1
@@ -160,15 +157,13 @@ void undo_cuts_that_did_not_pay(ChartTree& tree, double max_stretch, const std::
 }
 
 // The multigrid's relative residual for the maps that decide the cuts (the final maps keep the
-// method's 1e-10). At 1e-8 the 15 meshes of the bench table give the same charts (at 1e-7 the
-// closed Max Planck head is cut into 41 charts instead of staying one).
+// method's 1e-10): loose enough to be quick, tight enough to give the same charts; a looser one
+// can cut a chart that the full solve would keep whole.
 const double kDecidingTolerance = 1e-8;
 
-// Where the square may turn a chart that the bound cuts into one it keeps: the square took
-// the 15 bench meshes' charts from at most 1.13 x the bound on their own rectangle to under it
-// (75 of the 5166 charts tried both ways). Above, the chart is cut whatever its map: its square
-// would only cost a second solve (the armadillo 3.0 -> 2.2 s with the same atlas; 11 of the 15
-// meshes give the same atlas, the others' efficiency moves by less than 1%).
+// Where the square may turn a chart that the bound cuts into one it keeps: only charts a little
+// above the bound on their own rectangle get under it on the square. Above, the chart is cut
+// whatever its map: its square would only cost a second solve.
 const double kSquareMayMeet = 1.5;
 
 // The map that decides whether a chart is cut: onto its own rectangle, or the square where that
@@ -179,14 +174,12 @@ void map_to_decide(SolvedChart& chart, const Options& deciding, double max_stret
   chart.deciding_map = true;
 }
 
-// Multigrid iterations for a deciding map before the sparse LU takes over: a reconstruction's
-// body of 444k vertices (its handles cut open) did not converge in 50, each time 8 s spent before
-// the LU.
+// Multigrid iterations for a deciding map before the sparse LU takes over: on a large body that
+// does not converge, every further iteration is time lost before the LU.
 const int kDecidingIterations = 20;
 
-// Deciding where to cut needs the map's stretch, not its last digits: U0 and U1 only (the atlas
-// came out the same on the shared meshes, 30-50% sooner), solved to kDecidingTolerance. The
-// layout maps each chart fully.
+// Deciding where to cut needs the map's stretch, not its last digits: U0 and U1 only, solved to
+// kDecidingTolerance, give the same cuts in less time. The layout maps each chart fully.
 Options deciding_options(Options deciding) {
   deciding.max_passes = std::min(deciding.max_passes, 1);
   deciding.solver.tolerance = std::max(deciding.solver.tolerance, kDecidingTolerance);
@@ -198,7 +191,7 @@ Options deciding_options(Options deciding) {
 // A chart of fewer than 2 x kSmallestChart faces stays whole unless it stretches more than
 // kSmallCutAbove times the bound and has kSmallestCutChart faces or more (charts.h), or has two
 // faces or more and stretches more than kTinyCutAbove times the bound: no chart is too small to
-// cut, a single triangle maps without stretch (a scan's handle of 7 faces kept L2 380).
+// cut, since a single triangle maps without stretch.
 const double kTinyCutAbove = 8;
 bool too_small_to_cut(const SolvedChart& chart, double max_stretch) {
   const int faces = int(chart.faces.size());
@@ -250,8 +243,8 @@ Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
       SolvedChart& chart = tree.nodes[first + size_t(i)];
       if (!chart.cut_ahead) map_to_decide(chart, for_share(deciding, chart.faces.size(), round_faces), options.max_stretch);
     }, largest_first(tree.nodes, first, end));
-    // The charts the bound cuts, cut on both cores (a chart's parts depend on it alone: on the
-    // 769k-face scan the cuts took 5.3 s on one); the chart limit is applied after, in order.
+    // The charts the bound cuts, cut on both cores (a chart's parts depend on it alone, and the
+    // cuts of a large mesh are slow on one); the chart limit is applied after, in order.
     std::vector<int> to_cut;
     for (size_t i = first; i < end; ++i) {
       if (tree.nodes[i].cut_ahead) continue;

@@ -23,9 +23,9 @@ void for_each_index(int count, const std::function<void(int, int)>& job, const s
 std::vector<int> largest_first(const std::vector<SolvedChart>& charts, size_t first, size_t end);
 
 // The method's options for a chart of `faces` among `all_faces` solved at once. A chart with
-// most of the faces solves u and v on two threads while the rest share the second core (the
-// armadillo is cut into parts of 4422 and 47578 faces first: 3.4 -> 3.0 s, the same atlas); any
-// other builds one multigrid hierarchy for u and v instead of two, the threads keeping the cores busy.
+// most of the faces solves u and v on two threads while the rest share the second core (else it
+// would finish last, alone on one core); any other builds one multigrid hierarchy for u and v
+// instead of two, the threads keeping the cores busy.
 Options for_share(Options options, size_t faces, size_t all_faces);
 
 // The faces of charts [first, end) that are mapped (not cut ahead).

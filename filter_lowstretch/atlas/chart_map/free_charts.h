@@ -9,16 +9,15 @@
 namespace lowstretch {
 
 // How much better a free map must use its box: the rectangle's further passes and the free
-// chart's cell, rarely of its shape, eat smaller gains (1: the camel 0.611 -> 0.575 in efficiency,
-// 2: 0.604, 4: 0.614).
+// chart's cell, rarely of its shape, eat smaller gains.
 constexpr double kFreeMustPay = 4;
 
 // A chart whose rectangle uses its box poorly (kept above the bound: too small to cut, or its parts
 // stretched more; or a hole closed for the map left empty) is mapped again free: with the natural
 // boundary, or seen along its normal (a flat face of a CAD part, whose needles the natural boundary
 // folds). It keeps the free map that uses its box best (fill / L2^2) if that beats the rectangle
-// `must_pay` times and it does not fold over itself: a jagged sliver has no good rectangle (a
-// 37-face strip of a scan: L2 46.7 on its rectangle, 1.0 free).
+// `must_pay` times and it does not fold over itself: a jagged sliver has no good rectangle, but
+// maps free with little stretch.
 void free_the_charts_that_stretch(std::vector<SolvedChart>& charts, const ChartOptions& options, double must_pay = kFreeMustPay);
 
 // A chart seen along its normal at this L2 stretch or less is flat (a face of a CAD part).

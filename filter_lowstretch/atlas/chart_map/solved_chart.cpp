@@ -26,8 +26,7 @@ bool better_pass(const ChartPass& a, const ChartPass& b) {
 }
 
 // The tips of a chart's boundary ears go a quarter of their chord out of the rectangle: a cut
-// along mesh edges leaves many ears, which a straight side squeezes to slivers (an 830k-face
-// scan: L2 2.69 without, 1.46 with).
+// along mesh edges leaves many ears, which a straight side squeezes to slivers that stretch.
 const double kEarBulge = 0.25;
 
 }  // namespace
@@ -77,8 +76,8 @@ Error make_chart_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
   Error e = make_disk_mesh(local_V, local_F, check);
   if (e.code == ErrorCode::NonManifoldVertices) {
     // A cut that passes a hole can leave faces that meet at one vertex only: each fan gets its
-    // own copy of it (an armadillo with 200 one-face holes: a 42690-face chart at L2 1201 found
-    // no cut into disks without this). Parts held together by that vertex alone stay refused.
+    // own copy of it, or a chart with many small holes may find no cut into disks. Parts held
+    // together by that vertex alone stay refused.
     SplitFans split = split_vertex_fans(local_V, local_F);
     local_V = std::move(split.V);
     local_F = std::move(split.F);

@@ -14,7 +14,7 @@
 
 namespace lowstretch {
 
-// Below this share of empty texels there is nothing worth filling (statues tile at 0.95 or more).
+// Below this share of empty texels, filling them gains too little to pay for another layout.
 constexpr double kLeastEmptyShare = 0.05;
 
 // The share of the tiling's texels that its free charts and closed holes are expected to leave
@@ -30,9 +30,8 @@ struct GuestChoice {
   double share_of_empty = 0.5;
   bool flat_seen_along_normal = false;
 };
-// Each is tried on the kept atlas; the best layout is kept. Rectangles only suit most atlases
-// (the joint); any shape at 0.8 the anchor and rotor_small; flat faces seen along their normal,
-// with any shape at 0.5, couplingdown, the rotor and the spool.
+// Each is tried on the kept atlas; the best layout is kept. Rectangles only suit most atlases;
+// which choice fills the empty texels best depends on the atlas.
 constexpr GuestChoice kGuestChoices[] = {{false, 0.5, false}, {true, 0.8, false}, {true, 0.5, true}};
 
 std::vector<int> charts_to_put_in_empty_texels(const std::vector<SolvedChart>& charts, const std::vector<double>& own_area,

@@ -74,8 +74,8 @@ Error tile(const std::vector<SolvedChart>& charts, const std::vector<char>& tile
     if (thinnest > 2 * inset + 2.0 / options.texture_size) break;
     if (least * double(own_area.size()) > total) return {ErrorCode::ChartsNotPacked, static_cast<long long>(charts.size()), ""};
   }
-  // Scan debris: tiny parts, each given a cell it cannot fill, leave the rest of the mesh little
-  // texture (tests/bench/make_defects.py's debris30000: 66% of it, efficiency 0.25).
+  // Debris: many tiny parts, each given a cell it cannot fill, leave the rest of the mesh little
+  // texture.
   if (floored_share > kMostFlooredShare)
     notes.push_back(std::to_string(floored) + " charts too small for the " + std::to_string(options.texture_size) +
                     "-texel texture take " + std::to_string(int(std::lround(100 * floored_share))) +

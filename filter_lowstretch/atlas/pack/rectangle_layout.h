@@ -6,8 +6,7 @@
 // everywhere. Four tilings are made (rows along the shorter or the longer side; a row grows while
 // its worst cell or its mean cost improves); the one with the least area in cells too far from
 // their charts' shapes (filled in part: a lower texel density), then the one whose cells fit
-// best, is kept (holes5_lion 0.681 -> 0.691 in efficiency, no bench mesh lower; letting partly
-// filled cells in gave the bull 0.603 -> 0.635 but broke the even texel density).
+// best, is kept: a cell filled in part has a lower texel density, and the layout keeps it even.
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/Geometry>
