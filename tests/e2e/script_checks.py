@@ -1,6 +1,6 @@
-"""The check collector of the two scripts that are not pytest tests yet, tool_files.py and
-scan_atlas.py: their ctest registration is in tests/unit/CMakeLists.txt, which passes them script
-arguments. The end-to-end tests (test_e2e.py, tests/meshlab2025) are pytest tests."""
+"""The check collector of the scripts that are not pytest tests yet: bake.py (also a tool, run
+from README.md) and tool_files.py and scan_atlas.py, whose ctest registration is in
+tests/unit/CMakeLists.txt, which passes them script arguments. The end-to-end tests (test_e2e.py, tests/meshlab2025) are pytest tests."""
 
 
 class Checks:
