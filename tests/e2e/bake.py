@@ -32,6 +32,7 @@ sys.path.insert(0, HERE)
 import e2e  # noqa: E402
 import generate  # noqa: E402
 import meshio  # noqa: E402
+from script_checks import Checks  # noqa: E402
 from stretch_formula import map_stretch  # noqa: E402
 
 SIZE = 1024                 # texture side, as the .mlx and the filter's Texture size say
@@ -272,7 +273,7 @@ def main():
 
     os.makedirs(args.work, exist_ok=True)
     coloured, name = coloured_input(args)
-    check = e2e.Checks()
+    check = Checks()
     results, logs = {}, {}
     run = run_2020 if args.mode == "meshlab2020" else run_pymeshlab
     for method in PYMESHLAB_FILTERS:

@@ -72,14 +72,12 @@ class Gui:
         return subprocess.run(command, env=self.env, capture_output=True, text=True, timeout=60).stdout.strip()
 
     def window(self, name, timeout=30):
-        """Id of the visible window whose title matches the regular expression `name`."""
-        end = time.time() + timeout
-        while time.time() < end:
-            found = self.run("xdotool", "search", "--onlyvisible", "--name", name).split()
-            if found:
-                return found[0]
-            time.sleep(0.25)
-        return None
+        """Id of the visible window whose title matches the regular expression `name`, or None:
+        `xdotool search --sync` waits for it to appear (no polling), under coreutils' timeout."""
+        command = ["timeout", str(timeout), "xdotool", "search", "--sync", "--onlyvisible", "--name", name]
+        proc = subprocess.run(command, env=self.env, capture_output=True, text=True, timeout=timeout + 30)
+        found = proc.stdout.split()
+        return found[0] if proc.returncode == 0 and found else None
 
     def settle(self, timeout=10):
         """Waits until the screen stops changing (two grabs 0.2 s apart are equal): the GUI has

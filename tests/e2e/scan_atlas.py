@@ -22,7 +22,7 @@ import sys
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, here)
 import meshio  # noqa: E402
-from e2e import Checks  # noqa: E402
+from script_checks import Checks  # noqa: E402
 
 GUTTER = 2 / 1024  # the default gutter over the default texture size
 ZERO_AREA = 1e-12  # of the layout's square, as tests/bench/atlas_table.py counts zero-area triangles

@@ -17,7 +17,8 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import meshio  # noqa: E402
-from e2e import Checks, rel_diff  # noqa: E402
+from e2e import rel_diff  # noqa: E402
+from script_checks import Checks  # noqa: E402
 from stretch_formula import map_linf, map_stretch  # noqa: E402
 
 
