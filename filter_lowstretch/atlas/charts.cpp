@@ -147,138 +147,175 @@ bool has_faces_of_its_own(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
   return total - std::accumulate(largest.begin(), largest.end(), 0.0) >= kFacesShare * total;
 }
 
-// Any mesh as charts: its components cut until they meet the bound, or one chart per component
-// if that uses the texture better; a model made of faces cut along its sharp edges instead.
-ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options) {
-  // parameterize checked indices, coordinates, edges and orientation of the whole mesh before it
-  // found the topology wrong; vertex fans are checked per component and between components.
-  int count = 0;
-  const std::vector<int> component = face_components(F, count);
-  if (const int shared = vertices_shared_by_components(F, int(V.rows()), component))
-    return failed_result({ErrorCode::NonManifoldVertices, shared, ""});
-  std::vector<std::vector<int>> components(static_cast<size_t>(count));
-  for (Eigen::Index f = 0; f < F.rows(); ++f) components[size_t(component[size_t(f)])].push_back(int(f));
-
-  double unit = 1;
-  const Eigen::MatrixXd unit_V = unit_box_of_used(V, F, unit);
-  std::vector<std::string> notes;
-  if (options.disk.boundary != BoundaryShape::Square)
-    notes.push_back("an atlas maps every chart onto a rectangle: the boundary option applies to disks only");
-  const size_t part_count = components.size(), common_notes = notes.size();
-  // The atlases tried after the first start their progress again: it is reported as the most reached.
+// What the candidate atlases of make_atlas share: the mesh in its unit box, the options, and the
+// best atlas so far with its notes and its charts.
+struct AtlasSearch {
+  const Eigen::MatrixXd& V;
+  const Eigen::MatrixXi& F;
+  const ChartOptions& options;
+  ChartOptions reporting;  // options whose progress never goes back (each candidate restarts it)
   double reached = 0;
-  ChartOptions reporting = options;
-  if (options.disk.progress)
-    reporting.disk.progress = [&](double fraction, const char* stage) {
-      reached = std::max(reached, fraction);
-      return options.disk.progress(reached, stage);
-    };
-  // Each atlas tried is tiled; the charts of the one kept so far are kept too when its tiling is
-  // expected to leave texels empty: small charts are put into them on the kept atlas only
-  // (filling every atlas tried can find a better one, but costs much more time).
+  Eigen::MatrixXd unit_V;
+  double unit = 1;
+  std::vector<int> component;
+  std::vector<std::vector<int>> components;
+  std::vector<std::vector<int>> patches;  // between the sharp edges
+  bool made_of_faces = false;
+  std::vector<std::string> notes;
+  size_t common_notes = 0;  // notes of every candidate; those after them are the best one's
+  ChartsResult result;      // the best atlas so far
+  bool made = false;        // whether `result` holds an atlas yet
+  // Each candidate is tiled; the charts of the best one are kept too when its tiling is expected
+  // to leave texels empty: small charts are put into them on the best atlas only (filling every
+  // candidate can find a better one, but costs much more time).
   std::vector<SolvedChart> kept, tried;
-  const auto tile = [&](std::vector<SolvedChart> charts) {
+
+  AtlasSearch(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options)
+      : V(V), F(F), options(options), reporting(options) {
+    if (options.disk.progress)
+      reporting.disk.progress = [this](double fraction, const char* stage) {
+        reached = std::max(reached, fraction);
+        return this->options.disk.progress(reached, stage);
+      };
+  }
+  AtlasSearch(const AtlasSearch&) = delete;
+  AtlasSearch& operator=(const AtlasSearch&) = delete;
+
+  ChartsResult tile(std::vector<SolvedChart> charts) {
     const bool leaves_room = expected_empty_share(charts, cell_areas(charts)) >= kLeastEmptyShare;
     tried = leaves_room ? charts : std::vector<SolvedChart>();
     return atlas_of(std::move(charts), {}, unit_V, F, unit, int(V.rows()), options);
-  };
-  ChartsResult result;
-  bool made = false;  // whether `result` holds an atlas yet
-  // A model made of faces (a CAD part) is cut along its sharp edges. Where its parts, mapped
-  // whole, are above the bound, it is not also cut by stretch alone: on CAD parts that atlas
-  // loses to the sharp edges' and only costs time.
-  const std::vector<std::vector<int>> patches = patches_between_sharp_edges(unit_V, F, kSharpEdgeDegrees);
-  const bool made_of_faces = patches.size() > part_count && has_faces_of_its_own(unit_V, F, component, patches);
-  const auto cut_along_sharp_edges = [&]() -> Error {
-    for (const FacesCut& cut : kFacesCuts) {
-      if (cut.degrees != kSharpEdgeDegrees && made && !(texture_efficiency(result) < kGentlerCutBelow)) continue;
-      ChartOptions by_faces_options = reporting;
-      by_faces_options.max_stretch = 1 + cut.excess_kept * (options.max_stretch - 1);
-      std::vector<SolvedChart> by_faces_leaves, unused;
-      std::vector<std::string> by_faces_notes;
-      const Error e = split_until_bounded(unit_V, F,
-                                          cut.degrees == kSharpEdgeDegrees ? patches
-                                                                           : patches_between_sharp_edges(unit_V, F, cut.degrees),
-                                          by_faces_options, by_faces_leaves, unused, by_faces_notes);
-      if (e.code == ErrorCode::Cancelled) return e;
-      if (e) continue;
-      for (const double must_pay : kFreeFacesMustPay) {
-        std::vector<SolvedChart> leaves_of_try = by_faces_leaves;
-        free_the_charts_that_stretch(leaves_of_try, options, must_pay);
-        ChartsResult by_faces = tile(std::move(leaves_of_try));
-        if (by_faces.error || (made && !(texture_efficiency(by_faces) > texture_efficiency(result)))) continue;
-        const std::string against = made ? " against " + number_text(texture_efficiency(result)) : "";
-        result = std::move(by_faces);
-        made = true;
-        kept = std::move(tried);
-        notes.resize(common_notes);  // the cut's notes go with its atlas
-        notes.insert(notes.end(), by_faces_notes.begin(), by_faces_notes.end());
-        notes.push_back("charts cut along the sharp edges (a model made of faces; normals more than " +
+  }
+};
+
+// The components and the unit box; an error if components share a vertex.
+Error start_search(AtlasSearch& s) {
+  // parameterize checked indices, coordinates, edges and orientation of the whole mesh before it
+  // found the topology wrong; vertex fans are checked per component and between components.
+  int count = 0;
+  s.component = face_components(s.F, count);
+  if (const int shared = vertices_shared_by_components(s.F, int(s.V.rows()), s.component))
+    return {ErrorCode::NonManifoldVertices, shared, ""};
+  s.components.resize(static_cast<size_t>(count));
+  for (Eigen::Index f = 0; f < s.F.rows(); ++f) s.components[size_t(s.component[size_t(f)])].push_back(int(f));
+  s.unit_V = unit_box_of_used(s.V, s.F, s.unit);
+  if (s.options.disk.boundary != BoundaryShape::Square)
+    s.notes.push_back("an atlas maps every chart onto a rectangle: the boundary option applies to disks only");
+  s.common_notes = s.notes.size();
+  s.patches = patches_between_sharp_edges(s.unit_V, s.F, kSharpEdgeDegrees);
+  s.made_of_faces = s.patches.size() > s.components.size() && has_faces_of_its_own(s.unit_V, s.F, s.component, s.patches);
+  return {};
+}
+
+// Candidates: the charts between sharp edges (kFacesCuts), each with the charts that stretch
+// mapped free at kFreeFacesMustPay. Gentler cuts only while the best atlas is poor.
+Error cut_along_sharp_edges(AtlasSearch& s) {
+  for (const FacesCut& cut : kFacesCuts) {
+    if (cut.degrees != kSharpEdgeDegrees && s.made && !(texture_efficiency(s.result) < kGentlerCutBelow)) continue;
+    ChartOptions by_faces_options = s.reporting;
+    by_faces_options.max_stretch = 1 + cut.excess_kept * (s.options.max_stretch - 1);
+    std::vector<SolvedChart> by_faces_leaves, unused;
+    std::vector<std::string> by_faces_notes;
+    const Error e = split_until_bounded(
+        s.unit_V, s.F, cut.degrees == kSharpEdgeDegrees ? s.patches : patches_between_sharp_edges(s.unit_V, s.F, cut.degrees),
+        by_faces_options, by_faces_leaves, unused, by_faces_notes);
+    if (e.code == ErrorCode::Cancelled) return e;
+    if (e) continue;
+    for (const double must_pay : kFreeFacesMustPay) {
+      std::vector<SolvedChart> leaves_of_try = by_faces_leaves;
+      free_the_charts_that_stretch(leaves_of_try, s.options, must_pay);
+      ChartsResult by_faces = s.tile(std::move(leaves_of_try));
+      if (by_faces.error || (s.made && !(texture_efficiency(by_faces) > texture_efficiency(s.result)))) continue;
+      const std::string against = s.made ? " against " + number_text(texture_efficiency(s.result)) : "";
+      s.result = std::move(by_faces);
+      s.made = true;
+      s.kept = std::move(s.tried);
+      s.notes.resize(s.common_notes);  // the cut's notes go with its atlas
+      s.notes.insert(s.notes.end(), by_faces_notes.begin(), by_faces_notes.end());
+      s.notes.push_back("charts cut along the sharp edges (a model made of faces; normals more than " +
                         number_text(cut.degrees) + " degrees apart)" +
                         std::string(cut.excess_kept < 1 ? ", to L2 stretch " + number_text(by_faces_options.max_stretch) : "") +
-                        ": efficiency " + number_text(texture_efficiency(result)) + " (coverage / L2^2)" + against);
-      }
+                        ": efficiency " + number_text(texture_efficiency(s.result)) + " (coverage / L2^2)" + against);
     }
-    return {};
-  };
-  const bool only_sharp_edges = made_of_faces && !parts_meet_the_bound(unit_V, F, components, options);
+  }
+  return {};
+}
+
+// Candidates: the components cut by stretch until they meet the bound, and, unless that is
+// clearly better than they could be whole, one chart per component that was not cut.
+Error cut_by_stretch(AtlasSearch& s) {
+  std::vector<std::string> by_stretch_notes(s.notes.begin(), s.notes.begin() + long(s.common_notes));
+  std::vector<SolvedChart> leaves, uncut;
+  if (Error e = split_until_bounded(s.unit_V, s.F, std::move(s.components), s.reporting, leaves, uncut, by_stretch_notes))
+    return e;
+  free_the_charts_that_stretch(leaves, s.options);
+  const size_t cut_into = leaves.size();
+  ChartsResult by_stretch = s.tile(std::move(leaves));
+  std::vector<SolvedChart> by_stretch_kept = std::move(s.tried);
+  if (!uncut.empty() && !(texture_efficiency(by_stretch) > kClearlyBetter * best_possible_efficiency(uncut))) {
+    ChartsResult whole = s.tile(std::move(uncut));
+    if (more_efficient(whole, by_stretch)) {
+      by_stretch_notes.push_back("one chart per part: cut into " + std::to_string(cut_into) + " charts, the atlas had efficiency " +
+                                 number_text(texture_efficiency(by_stretch)) + " (coverage / L2^2) against " +
+                                 number_text(texture_efficiency(whole)));
+      by_stretch = std::move(whole);
+      by_stretch_kept = std::move(s.tried);
+    }
+  }
+  if (!s.made || more_efficient(by_stretch, s.result)) {
+    s.result = std::move(by_stretch);
+    s.kept = std::move(by_stretch_kept);
+    s.notes = std::move(by_stretch_notes);
+    s.made = true;
+  }
+  return {};
+}
+
+// Candidates: the best atlas with small charts put into the texels its tiling leaves empty
+// (kGuestChoices), kept where that uses the texture better.
+void put_small_charts_in_empty_texels(AtlasSearch& s) {
+  if (s.kept.empty() || !(s.result.coverage < 1 - kLeastEmptyShare)) return;
+  const double tiled = texture_efficiency(s.result);
+  std::vector<SolvedChart> flat_seen;
+  for (const GuestChoice& choice : kGuestChoices) {
+    if (choice.flat_seen_along_normal && flat_seen.empty()) {
+      flat_seen = s.kept;
+      see_flat_charts_along_normal(flat_seen);
+    }
+    const std::vector<SolvedChart>& charts = choice.flat_seen_along_normal ? flat_seen : s.kept;
+    const std::vector<int> guests = charts_to_put_in_empty_texels(charts, cell_areas(charts), choice);
+    if (guests.empty()) continue;
+    ChartsResult nested = atlas_of(charts, guests, s.unit_V, s.F, s.unit, int(s.V.rows()), s.options);
+    if (nested.error || !(texture_efficiency(nested) > texture_efficiency(s.result))) continue;
+    nested.notes.push_back(std::string("with small charts in empty texels") +
+                           (choice.flat_seen_along_normal ? " and flat charts as seen along their normal" : "") +
+                           " the atlas has efficiency " + number_text(texture_efficiency(nested)) + " (coverage / L2^2) against " +
+                           number_text(tiled));
+    s.result = std::move(nested);
+  }
+}
+
+// Any mesh as charts. The candidates, in order, the best kept:
+// 1. a model made of faces (a CAD part) whose parts, mapped whole, are above the bound: its
+//    charts between sharp edges only (cutting such a model by stretch loses to them, and costs time);
+// 2. otherwise, or if those failed: its components cut by stretch (or whole);
+// 3. a model made of faces whose kept atlas still has charts above the bound: also between sharp
+//    edges (parts that met the bound while deciding may stretch more in their cells);
+// 4. the best of them with small charts in the texels its tiling leaves empty.
+ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options) {
+  AtlasSearch s(V, F, options);
+  if (Error e = start_search(s)) return failed_result(e);
+  const bool only_sharp_edges = s.made_of_faces && !parts_meet_the_bound(s.unit_V, s.F, s.components, options);
   if (only_sharp_edges)
-    if (Error e = cut_along_sharp_edges()) return failed_result(e);
-  // Cut by stretch alone: the atlas of a mesh not made of faces, or of one whose cuts along its
-  // sharp edges failed or left flipped or zero-area triangles (the better of the two is kept).
-  if (!made || !(texture_efficiency(result) > 0)) {
-    std::vector<std::string> by_stretch_notes(notes.begin(), notes.begin() + long(common_notes));
-    std::vector<SolvedChart> leaves, uncut;
-    if (Error e = split_until_bounded(unit_V, F, std::move(components), reporting, leaves, uncut, by_stretch_notes))
-      return failed_result(e);
-    free_the_charts_that_stretch(leaves, options);
-    const size_t cut_into = leaves.size();
-    ChartsResult by_stretch = tile(std::move(leaves));
-    std::vector<SolvedChart> by_stretch_kept = std::move(tried);
-    if (!uncut.empty() && !(texture_efficiency(by_stretch) > kClearlyBetter * best_possible_efficiency(uncut))) {
-      ChartsResult whole = tile(std::move(uncut));
-      if (more_efficient(whole, by_stretch)) {
-        by_stretch_notes.push_back("one chart per part: cut into " + std::to_string(cut_into) + " charts, the atlas had efficiency " +
-                                   number_text(texture_efficiency(by_stretch)) + " (coverage / L2^2) against " +
-                                   number_text(texture_efficiency(whole)));
-        by_stretch = std::move(whole);
-        by_stretch_kept = std::move(tried);
-      }
-    }
-    if (!made || more_efficient(by_stretch, result)) {
-      result = std::move(by_stretch);
-      kept = std::move(by_stretch_kept);
-      notes = std::move(by_stretch_notes);
-      made = true;
-    }
-  }
-  // Parts that met the bound while deciding, and so were not cut, may stretch more in their cells:
-  // a model made of faces is then cut along its sharp edges too, the better atlas kept.
-  const bool above = std::any_of(result.charts.begin(), result.charts.end(), [](const Chart& c) { return c.above_bound; });
-  if (made_of_faces && !only_sharp_edges && above)
-    if (Error e = cut_along_sharp_edges()) return failed_result(e);
-  if (!kept.empty() && result.coverage < 1 - kLeastEmptyShare) {
-    const double tiled = texture_efficiency(result);
-    std::vector<SolvedChart> flat_seen;
-    for (const GuestChoice& choice : kGuestChoices) {
-      if (choice.flat_seen_along_normal && flat_seen.empty()) {
-        flat_seen = kept;
-        see_flat_charts_along_normal(flat_seen);
-      }
-      const std::vector<SolvedChart>& charts = choice.flat_seen_along_normal ? flat_seen : kept;
-      const std::vector<int> guests = charts_to_put_in_empty_texels(charts, cell_areas(charts), choice);
-      if (guests.empty()) continue;
-      ChartsResult nested = atlas_of(charts, guests, unit_V, F, unit, int(V.rows()), options);
-      if (nested.error || !(texture_efficiency(nested) > texture_efficiency(result))) continue;
-      nested.notes.push_back(std::string("with small charts in empty texels") +
-                             (choice.flat_seen_along_normal ? " and flat charts as seen along their normal" : "") +
-                             " the atlas has efficiency " + number_text(texture_efficiency(nested)) + " (coverage / L2^2) against " +
-                             number_text(tiled));
-      result = std::move(nested);
-    }
-  }
-  result.notes.insert(result.notes.begin(), notes.begin(), notes.end());
-  return result;
+    if (Error e = cut_along_sharp_edges(s)) return failed_result(e);
+  if (!s.made || !(texture_efficiency(s.result) > 0))
+    if (Error e = cut_by_stretch(s)) return failed_result(e);
+  const bool above = std::any_of(s.result.charts.begin(), s.result.charts.end(), [](const Chart& c) { return c.above_bound; });
+  if (s.made_of_faces && !only_sharp_edges && above)
+    if (Error e = cut_along_sharp_edges(s)) return failed_result(e);
+  put_small_charts_in_empty_texels(s);
+  s.result.notes.insert(s.result.notes.begin(), s.notes.begin(), s.notes.end());
+  return std::move(s.result);
 }
 
 // The errors that a manifold copy of the mesh gets past (several components: when parts touch
@@ -381,7 +418,7 @@ ChartsResult disk_or_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, c
     }
   }
   const bool is_disk = !whole.error;
-  if (!is_disk && (options.non_disk == NonDisk::Reject || !charts_can_fix(whole.error.code)))
+  if (!is_disk && (options.non_disk == NonDisk::Reject || !cutting_into_disks_fixes(whole.error.code)))
     return failed_result(whole.error);
   // A disk keeps the paper's single chart, unless it has flipped or zero-area triangles as stored
   // (or, for Atlas, stretches more than the bound) and an atlas uses the texture better.
@@ -414,6 +451,8 @@ ChartsResult disk_or_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, c
 }
 
 }  // namespace
+
+bool charts_would_help(ErrorCode code) { return cutting_into_disks_fixes(code) || manifold_copy_helps(code); }
 
 ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options) {
   if (Error e = check_chart_options(options)) return failed_result(e);

@@ -111,6 +111,10 @@ double texture_efficiency(const ChartsResult& result);
 // The highest L2 stretch of any one chart (0 for a failed result).
 double largest_chart_stretch(const ChartsResult& result);
 
+// Whether making charts gets past this error of the disk check (a cut into disks or a manifold copy
+// fixes it): the caller then adds how its user asks for charts.
+bool charts_would_help(ErrorCode code);
+
 const char* to_string(NonDisk non_disk);
 
 }  // namespace lowstretch

@@ -8,7 +8,7 @@ namespace {
 std::string n(long long v) { return std::to_string(v); }
 std::string plural(long long v, const char* one, const char* many) { return n(v) + " " + (v == 1 ? one : many); }
 // The way out for the topology problems that charts solve (charts.h); the caller names the
-// option its user knows (charts_would_help).
+// option its user knows (charts_would_help in atlas/charts.h).
 const char* const kChartsHint = "parameterize it as charts";
 }  // namespace
 
@@ -73,12 +73,6 @@ std::string number_text(double value) {
   std::ostringstream s;
   s << value;
   return s.str();
-}
-
-bool charts_would_help(ErrorCode code) {
-  return code == ErrorCode::SeveralComponents || code == ErrorCode::Closed || code == ErrorCode::SeveralBoundaryLoops ||
-         code == ErrorCode::NotGenusZero || code == ErrorCode::NonManifoldVertices || code == ErrorCode::NonManifoldEdges ||
-         code == ErrorCode::InconsistentOrientation || code == ErrorCode::RepeatedVertexInFace;
 }
 
 const char* code_name(ErrorCode code) {

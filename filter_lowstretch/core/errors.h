@@ -42,9 +42,6 @@ std::string message(const Error& error);
 // The same, with the option at fault (InvalidOption) named as the caller's user knows it: a flag
 // of the tool, a parameter label of the filter. `name_of` maps the core's name to that.
 std::string message(const Error& error, const std::function<std::string(const std::string&)>& name_of);
-// Whether parameterizing the mesh as charts (charts.h) gets past this error: the caller then adds
-// how its user asks for charts.
-bool charts_would_help(ErrorCode code);
 // A number as a person writes it in a message: 2, 0.5, 1e+30.
 std::string number_text(double value);
 // A stable short name for scripts and JSON ("several_boundary_loops").

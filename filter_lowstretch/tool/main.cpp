@@ -111,7 +111,7 @@ nlohmann::ordered_json chart_json(const Chart& c) {
 }
 
 // The input, every option (by its core name), a disk's passes, the map as written, the summary of
-// result_table.h, and for charts each chart and each pass over all charts.
+// result_table.h, each chart and each pass over all charts.
 void print_json(const Arguments& a, const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartsResult& c) {
   nlohmann::ordered_json o = {{"input", a.input}, {"vertices", V.rows()}, {"faces", F.rows()}};
   for (const OptionRow& row : option_table()) {
@@ -136,7 +136,7 @@ void print_json(const Arguments& a, const Eigen::MatrixXd& V, const Eigen::Matri
     if (row.is_int) o[row.json_key] = static_cast<long long>(value);
     else o[row.json_key] = value;
   }
-  if (!c.input_is_disk) {
+  {
     nlohmann::ordered_json charts = nlohmann::ordered_json::array(), passes = nlohmann::ordered_json::array();
     for (const Chart& chart : c.charts) charts.push_back(chart_json(chart));
     for (const LayoutPass& p : c.passes)

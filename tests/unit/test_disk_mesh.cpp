@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "atlas/charts.h"
 #include "core/disk_mesh.h"
 #include "core/parameterize.h"
 #include "generated_meshes.h"

@@ -48,7 +48,7 @@ double SolvedChart::uv_area() const {
 
 double SolvedChart::fill() const { return box.volume() > 0 ? std::min(1.0, uv_area() / box.volume()) : 0; }
 
-bool charts_can_fix(ErrorCode code) {
+bool cutting_into_disks_fixes(ErrorCode code) {
   return code == ErrorCode::SeveralComponents || code == ErrorCode::Closed || code == ErrorCode::SeveralBoundaryLoops ||
          code == ErrorCode::NotGenusZero;
 }
@@ -84,7 +84,7 @@ Error make_chart_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
     e = make_disk_mesh(local_V, local_F, check);
     if (e.code == ErrorCode::SeveralComponents) return e;
   }
-  if (e && !charts_can_fix(e.code)) return e;
+  if (e && !cutting_into_disks_fixes(e.code)) return e;
 
   const int real_vertices = int(local_V.rows());
   const std::vector<std::vector<int>> loops = boundary_loops(local_F, opposite_half_edges(local_F), real_vertices);

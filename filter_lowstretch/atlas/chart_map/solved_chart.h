@@ -13,10 +13,9 @@
 
 namespace lowstretch {
 
-// The problems that charts solve (besides non-manifold vertices, split per fan before: see
-// parameterize_charts); anything else (non-manifold edges, non-orientable, bad indices or
-// coordinates) stays an error.
-bool charts_can_fix(ErrorCode code);
+// The problems a chart's cut into disks solves (several parts, closed, holes, genus); the manifold
+// copy (split_vertex_fans.h) solves non-manifold and misoriented ones before.
+bool cutting_into_disks_fixes(ErrorCode code);
 
 // One component made into a disk: its faces first (in input order), then the virtual faces
 // that close its holes.
