@@ -368,67 +368,70 @@ std::vector<std::string> split_notes(const SplitFans& split) {
 
 // parameterize_charts; `own_copies`: V holds copies of vertices made for a manifold copy, which
 // are no sign of an unwelded mesh.
-ChartsResult disk_or_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options, bool own_copies) {
-  const Clock::time_point start = Clock::now();
-  Result whole = parameterize(V, F, options.disk);
-  if (own_copies && whole.error.code == ErrorCode::UnweldedVertices) whole.error = {ErrorCode::SeveralComponents, 0, ""};
-  const auto disk_result = [&](const Eigen::MatrixXd& unit_V) {
-    ChartsResult result = from_disk(F, std::move(whole));
-    std::vector<int> all(static_cast<size_t>(F.rows()));
-    for (Eigen::Index f = 0; f < F.rows(); ++f) all[size_t(f)] = int(f);
-    store(unit_V, F, int(V.rows()), {all}, options, result);
-    // The layout is the kept pass, as stored: its number, timings and solver stay.
-    const PassMetrics measured = result.layout;
-    result.layout = result.disk_passes.at(size_t(result.chosen_pass));
-    copy_measures(measured, result.layout);
-    result.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
-    return result;
-  };
-  // A mesh that is not manifold or not consistently oriented: the charts are made on a manifold
-  // copy (split_vertex_fans.h), cut open along its bad edges and split at its bad vertices.
-  if (options.non_disk != NonDisk::Reject && manifold_copy_helps(whole.error.code)) {
-    const SplitFans split = split_vertex_fans(V, F);
-    if (split.new_vertices > 0) {
-      if (is_unwelded(V, F)) return failed_result({ErrorCode::UnweldedVertices, vertices_on_others(used_rows(V, F)), ""});
-      ChartsResult result = disk_or_atlas(split.V, split.F, options, true);
-      if (result.error) return result;
-      result.vertex_stretch = join_vertex_values(split, result.vertex_stretch, int(V.rows()));
-      const std::vector<std::string> notes = split_notes(split);
-      result.notes.insert(result.notes.begin(), notes.begin(), notes.end());
-      result.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
-      return result;
-    }
-  }
-  // Parts of zero 3D area have nothing to map: the atlas is made of the other parts.
-  if (options.non_disk != NonDisk::Reject && whole.error.code == ErrorCode::SeveralComponents) {
-    double unit = 1;
-    const std::vector<int> zero_area = faces_of_zero_area_parts(unit_box_of_used(V, F, unit), F);
-    if (!zero_area.empty() && Eigen::Index(zero_area.size()) < F.rows()) {
-      std::vector<int> mapped;
-      for (Eigen::Index f = 0, z = 0; f < F.rows(); ++f)
-        if (size_t(z) < zero_area.size() && zero_area[size_t(z)] == f) ++z;
-        else mapped.push_back(int(f));
-      Eigen::MatrixXi mapped_F(Eigen::Index(mapped.size()), 3);
-      for (size_t j = 0; j < mapped.size(); ++j) mapped_F.row(Eigen::Index(j)) = F.row(mapped[j]);
-      ChartsResult result = disk_or_atlas(V, mapped_F, options, own_copies);
-      if (result.error) return result;
-      result = with_zero_area_faces(std::move(result), F, mapped, zero_area, options);
-      result.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
-      return result;
-    }
-  }
+ChartsResult disk_or_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options, bool own_copies);
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// parameterize's map of a disk as one chart, stored and measured as MeshLab holds it.
+ChartsResult disk_result(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options, Result whole,
+                         const Eigen::MatrixXd& unit_V, Clock::time_point start) {
+  ChartsResult result = from_disk(F, std::move(whole));
+  std::vector<int> all(static_cast<size_t>(F.rows()));
+  for (Eigen::Index f = 0; f < F.rows(); ++f) all[size_t(f)] = int(f);
+  store(unit_V, F, int(V.rows()), {all}, options, result);
+  // The layout is the kept pass, as stored: its number, timings and solver stay.
+  const PassMetrics measured = result.layout;
+  result.layout = result.disk_passes.at(size_t(result.chosen_pass));
+  copy_measures(measured, result.layout);
+  result.seconds_total = seconds_since(start);
+  return result;
+}
+
+// A mesh that is not manifold or not consistently oriented: the charts are made on a manifold
+// copy (split_vertex_fans.h), cut open along its bad edges and split at its bad vertices.
+ChartsResult on_manifold_copy(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options,
+                              const SplitFans& split, Clock::time_point start) {
+  if (is_unwelded(V, F)) return failed_result({ErrorCode::UnweldedVertices, vertices_on_others(used_rows(V, F)), ""});
+  ChartsResult result = disk_or_atlas(split.V, split.F, options, true);
+  if (result.error) return result;
+  result.vertex_stretch = join_vertex_values(split, result.vertex_stretch, int(V.rows()));
+  const std::vector<std::string> notes = split_notes(split);
+  result.notes.insert(result.notes.begin(), notes.begin(), notes.end());
+  result.seconds_total = seconds_since(start);
+  return result;
+}
+
+// Parts of zero 3D area have nothing to map: the atlas is made of the other parts.
+ChartsResult without_zero_area_parts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options,
+                                     bool own_copies, const std::vector<int>& zero_area, Clock::time_point start) {
+  std::vector<int> mapped;
+  for (Eigen::Index f = 0, z = 0; f < F.rows(); ++f)
+    if (size_t(z) < zero_area.size() && zero_area[size_t(z)] == f) ++z;
+    else mapped.push_back(int(f));
+  Eigen::MatrixXi mapped_F(Eigen::Index(mapped.size()), 3);
+  for (size_t j = 0; j < mapped.size(); ++j) mapped_F.row(Eigen::Index(j)) = F.row(mapped[j]);
+  ChartsResult result = disk_or_atlas(V, mapped_F, options, own_copies);
+  if (result.error) return result;
+  result = with_zero_area_faces(std::move(result), F, mapped, zero_area, options);
+  result.seconds_total = seconds_since(start);
+  return result;
+}
+
+// A disk keeps the paper's single chart, unless it has flipped or zero-area triangles as stored
+// (or, for Atlas, stretches more than the bound) and an atlas uses the texture better; a valid
+// map wins over an invalid one, whatever their efficiency. Any other mesh gets the atlas.
+ChartsResult disk_or_atlas_of_whole(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options,
+                                    Result whole, Clock::time_point start) {
   const bool is_disk = !whole.error;
   if (!is_disk && (options.non_disk == NonDisk::Reject || !cutting_into_disks_fixes(whole.error.code)))
     return failed_result(whole.error);
-  // A disk keeps the paper's single chart, unless it has flipped or zero-area triangles as stored
-  // (or, for Atlas, stretches more than the bound) and an atlas uses the texture better.
   ChartsResult disk;
   double unit = 1;
   const Eigen::MatrixXd unit_V = is_disk ? unit_box_of_used(V, F, unit) : Eigen::MatrixXd();
   const auto valid = [&](const ChartsResult& r) { return !r.error && invalid_faces(unit_V, F, r.corner_uv).empty(); };
   bool disk_valid = false;
   if (is_disk) {
-    disk = disk_result(unit_V);
+    disk = disk_result(V, F, options, std::move(whole), unit_V, start);
     disk_valid = valid(disk);
     const bool try_atlas = options.non_disk == NonDisk::Atlas
                                ? !disk_valid || needs_split(as_chart_pass(disk.disk_passes.at(size_t(disk.chosen_pass))), options.max_stretch)
@@ -436,7 +439,6 @@ ChartsResult disk_or_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, c
     if (!try_atlas) return disk;
   }
   ChartsResult atlas = make_atlas(V, F, options);
-  // A valid map wins over an invalid one, whatever their efficiency.
   const bool atlas_valid = is_disk && valid(atlas);
   if (is_disk && (atlas.error || (disk_valid != atlas_valid ? disk_valid : !more_efficient(atlas, disk)))) {
     if (!atlas.error)
@@ -445,9 +447,26 @@ ChartsResult disk_or_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, c
                            number_text(texture_efficiency(disk)));
     return disk;
   }
-  atlas.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
+  atlas.seconds_total = seconds_since(start);
   atlas.layout.seconds = atlas.seconds_total;
   return atlas;
+}
+
+ChartsResult disk_or_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options, bool own_copies) {
+  const Clock::time_point start = Clock::now();
+  Result whole = parameterize(V, F, options.disk);
+  if (own_copies && whole.error.code == ErrorCode::UnweldedVertices) whole.error = {ErrorCode::SeveralComponents, 0, ""};
+  if (options.non_disk != NonDisk::Reject && manifold_copy_helps(whole.error.code)) {
+    const SplitFans split = split_vertex_fans(V, F);
+    if (split.new_vertices > 0) return on_manifold_copy(V, F, options, split, start);
+  }
+  if (options.non_disk != NonDisk::Reject && whole.error.code == ErrorCode::SeveralComponents) {
+    double unit = 1;
+    const std::vector<int> zero_area = faces_of_zero_area_parts(unit_box_of_used(V, F, unit), F);
+    if (!zero_area.empty() && Eigen::Index(zero_area.size()) < F.rows())
+      return without_zero_area_parts(V, F, options, own_copies, zero_area, start);
+  }
+  return disk_or_atlas_of_whole(V, F, options, std::move(whole), start);
 }
 
 }  // namespace

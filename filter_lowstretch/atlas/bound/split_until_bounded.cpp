@@ -200,6 +200,90 @@ bool too_small_to_cut(const SolvedChart& chart, double max_stretch) {
   return faces < kSmallestCutChart || chart.kept.l2_stretch <= kSmallCutAbove * max_stretch;
 }
 
+// One split_until_bounded: the mesh, the tree of charts and their cuts, and the chart count.
+struct Splitting {
+  const Eigen::MatrixXd& unit_V;
+  const Eigen::MatrixXi& F;
+  const ChartOptions& options;
+  std::vector<int> twin;                      // opposite_half_edges(F)
+  std::vector<std::vector<int>> local_of;     // make_chart_mesh's scratch, per worker
+  ChartTree tree;
+  int charts = 0;
+  bool limit_reached = false;
+};
+
+// The charts of nodes [first, end) that the bound cuts, in order; one too small to cut is kept whole.
+Error charts_to_cut(Splitting& s, size_t first, size_t end, std::vector<int>& to_cut) {
+  for (size_t i = first; i < end; ++i) {
+    SolvedChart& chart = s.tree.nodes[i];
+    if (chart.cut_ahead) continue;
+    if (chart.map.error) return chart.map.error;
+    if (!bound_cuts(chart, s.options.max_stretch)) continue;
+    if (too_small_to_cut(chart, s.options.max_stretch)) chart.kept_whole = "too few faces to cut";
+    else to_cut.push_back(int(i));
+  }
+  return {};
+}
+
+// Their cuts, made on both cores, largest first: a chart's parts depend on it alone, and the cuts
+// of a large mesh are slow on one.
+std::vector<Cut> cut_on_both_cores(Splitting& s, const std::vector<int>& to_cut) {
+  std::vector<Cut> cuts(to_cut.size());
+  std::vector<int> order(to_cut.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return s.tree.nodes[size_t(to_cut[size_t(a)])].faces.size() > s.tree.nodes[size_t(to_cut[size_t(b)])].faces.size();
+  });
+  for_each_index(int(to_cut.size()), [&](int k, int worker) {
+    if (s.local_of[size_t(worker)].empty()) s.local_of[size_t(worker)].assign(size_t(s.unit_V.rows()), -1);
+    const SolvedChart& chart = s.tree.nodes[size_t(to_cut[size_t(k)])];
+    cuts[size_t(k)] = cut_with_cuts_ahead(s.unit_V, s.F, s.twin, chart, cuts_ahead(chart.kept, chart.faces.size(), s.options),
+                                          s.local_of[size_t(worker)]);
+  }, order);
+  return cuts;
+}
+
+// The pieces of the cuts into the tree, in order, within the chart limit.
+void add_pieces(Splitting& s, const std::vector<int>& to_cut, std::vector<Cut>& cuts) {
+  for (size_t k = 0; k < to_cut.size(); ++k) {
+    const size_t i = size_t(to_cut[k]);
+    if (s.charts >= s.options.max_charts) {
+      s.tree.nodes[i].kept_whole = "the chart limit is reached";
+      s.limit_reached = true;
+      continue;
+    }
+    Cut& cut = cuts[k];
+    if (s.charts + int(cut.pieces.size()) - cut.ahead() - 1 > s.options.max_charts)
+      keep_only_the_first_cut(s.unit_V, s.F, cut, s.local_of[0]);
+    if (cut.pieces.empty()) s.tree.nodes[i].kept_whole = "no cut into disks was found";
+    s.charts += std::max(0, int(cut.pieces.size()) - cut.ahead() - 1);
+    const size_t base = s.tree.nodes.size();
+    for (size_t j = 0; j < cut.pieces.size(); ++j) {
+      s.tree.parts[cut.parent[j] < 0 ? i : base + size_t(cut.parent[j])].push_back(int(s.tree.nodes.size()));
+      s.tree.nodes.push_back(std::move(cut.pieces[j]));
+      s.tree.parts.emplace_back();
+    }
+  }
+}
+
+// The leaves of the tree, depth first, parts in order; and the roots whole if any was cut.
+void collect_charts(ChartTree& tree, size_t roots, std::vector<SolvedChart>& leaves, std::vector<SolvedChart>& uncut) {
+  bool cut = false;
+  for (size_t root = 0; root < roots; ++root) cut = cut || !tree.parts[root].empty();
+  for (size_t root = 0; root < roots && cut; ++root) {
+    uncut.push_back(tree.nodes[root]);
+    if (!tree.parts[root].empty()) uncut.back().kept_whole = "one chart per part stretched less";
+  }
+  std::vector<int> stack;
+  for (size_t root = roots; root-- > 0;) stack.push_back(int(root));
+  while (!stack.empty()) {
+    const int i = stack.back();
+    stack.pop_back();
+    if (tree.parts[size_t(i)].empty()) leaves.push_back(std::move(tree.nodes[size_t(i)]));
+    for (size_t k = tree.parts[size_t(i)].size(); k-- > 0;) stack.push_back(tree.parts[size_t(i)][k]);
+  }
+}
+
 }  // namespace
 
 bool parts_meet_the_bound(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const std::vector<std::vector<int>>& parts,
@@ -224,89 +308,37 @@ bool parts_meet_the_bound(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
 Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, std::vector<std::vector<int>> components,
                           const ChartOptions& options, std::vector<SolvedChart>& leaves, std::vector<SolvedChart>& uncut,
                           std::vector<std::string>& notes) {
-  const std::vector<int> twin = opposite_half_edges(F);
-  std::vector<std::vector<int>> local_of(kMostThreads);  // make_chart_mesh's scratch, per worker
-  local_of[0].assign(size_t(unit_V.rows()), -1);
-  ChartTree tree;
+  Splitting s{unit_V, F, options, opposite_half_edges(F), std::vector<std::vector<int>>(kMostThreads), ChartTree(), 0, false};
+  s.local_of[0].assign(size_t(unit_V.rows()), -1);
   for (std::vector<int>& faces : components) {
-    tree.nodes.emplace_back();
-    if (Error e = make_chart_mesh(unit_V, F, faces, local_of[0], tree.nodes.back().mesh)) return e;
-    tree.nodes.back().faces = std::move(faces);
+    s.tree.nodes.emplace_back();
+    if (Error e = make_chart_mesh(unit_V, F, faces, s.local_of[0], s.tree.nodes.back().mesh)) return e;
+    s.tree.nodes.back().faces = std::move(faces);
   }
-  tree.parts.resize(tree.nodes.size());
-  int charts = int(tree.nodes.size());
-  bool limit_reached = false;
+  s.tree.parts.resize(s.tree.nodes.size());
+  s.charts = int(s.tree.nodes.size());
   const Options deciding = deciding_options(options.disk);
-  for (size_t first = 0, end = tree.nodes.size(); first < end; first = end, end = tree.nodes.size()) {
-    const size_t round_faces = faces_in(tree.nodes, first, end);
+  // Round after round: the new charts mapped on both cores, then those the bound cuts cut.
+  for (size_t first = 0, end = s.tree.nodes.size(); first < end; first = end, end = s.tree.nodes.size()) {
+    const size_t round_faces = faces_in(s.tree.nodes, first, end);
     for_each_index(int(end - first), [&](int i, int) {
-      SolvedChart& chart = tree.nodes[first + size_t(i)];
+      SolvedChart& chart = s.tree.nodes[first + size_t(i)];
       if (!chart.cut_ahead) map_to_decide(chart, for_share(deciding, chart.faces.size(), round_faces), options.max_stretch);
-    }, largest_first(tree.nodes, first, end));
-    // The charts the bound cuts, cut on both cores (a chart's parts depend on it alone, and the
-    // cuts of a large mesh are slow on one); the chart limit is applied after, in order.
+    }, largest_first(s.tree.nodes, first, end));
     std::vector<int> to_cut;
-    for (size_t i = first; i < end; ++i) {
-      if (tree.nodes[i].cut_ahead) continue;
-      if (tree.nodes[i].map.error) return tree.nodes[i].map.error;
-      if (!bound_cuts(tree.nodes[i], options.max_stretch)) continue;
-      if (too_small_to_cut(tree.nodes[i], options.max_stretch)) tree.nodes[i].kept_whole = "too few faces to cut";
-      else to_cut.push_back(int(i));
-    }
-    std::vector<Cut> cuts(to_cut.size());
-    std::vector<int> order(to_cut.size());
-    std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-      return tree.nodes[size_t(to_cut[size_t(a)])].faces.size() > tree.nodes[size_t(to_cut[size_t(b)])].faces.size();
-    });
-    for_each_index(int(to_cut.size()), [&](int k, int worker) {
-      if (local_of[size_t(worker)].empty()) local_of[size_t(worker)].assign(size_t(unit_V.rows()), -1);
-      const SolvedChart& chart = tree.nodes[size_t(to_cut[size_t(k)])];
-      cuts[size_t(k)] = cut_with_cuts_ahead(unit_V, F, twin, chart, cuts_ahead(chart.kept, chart.faces.size(), options),
-                                                local_of[size_t(worker)]);
-    }, order);
-    for (size_t k = 0; k < to_cut.size(); ++k) {
-      const size_t i = size_t(to_cut[k]);
-      if (charts >= options.max_charts) {
-        tree.nodes[i].kept_whole = "the chart limit is reached";
-        limit_reached = true;
-        continue;
-      }
-      Cut& cut = cuts[k];
-      if (charts + int(cut.pieces.size()) - cut.ahead() - 1 > options.max_charts)
-        keep_only_the_first_cut(unit_V, F, cut, local_of[0]);
-      if (cut.pieces.empty()) tree.nodes[i].kept_whole = "no cut into disks was found";
-      charts += std::max(0, int(cut.pieces.size()) - cut.ahead() - 1);
-      const size_t base = tree.nodes.size();
-      for (size_t j = 0; j < cut.pieces.size(); ++j) {
-        tree.parts[cut.parent[j] < 0 ? i : base + size_t(cut.parent[j])].push_back(int(tree.nodes.size()));
-        tree.nodes.push_back(std::move(cut.pieces[j]));
-        tree.parts.emplace_back();
-      }
-    }
+    if (Error e = charts_to_cut(s, first, end, to_cut)) return e;
+    std::vector<Cut> cuts = cut_on_both_cores(s, to_cut);
+    add_pieces(s, to_cut, cuts);
     if (options.disk.progress && !options.disk.progress(0.9 * (1 - std::pow(0.5, double(end))), "charts"))
       return {ErrorCode::Cancelled, 0, ""};
   }
-  undo_cuts_that_did_not_pay(tree, options.max_stretch, [&](SolvedChart& chart) {
-    if (make_chart_mesh(unit_V, F, chart.faces, local_of[0], chart.mesh)) return false;
+  undo_cuts_that_did_not_pay(s.tree, options.max_stretch, [&](SolvedChart& chart) {
+    if (make_chart_mesh(unit_V, F, chart.faces, s.local_of[0], chart.mesh)) return false;
     map_to_decide(chart, deciding, options.max_stretch);
     return !chart.map.error;
   });
-  bool cut = false;
-  for (size_t root = 0; root < components.size(); ++root) cut = cut || !tree.parts[root].empty();
-  for (size_t root = 0; root < components.size() && cut; ++root) {
-    uncut.push_back(tree.nodes[root]);
-    if (!tree.parts[root].empty()) uncut.back().kept_whole = "one chart per part stretched less";
-  }
-  std::vector<int> stack;
-  for (size_t root = components.size(); root-- > 0;) stack.push_back(int(root));
-  while (!stack.empty()) {  // the leaves, depth first, parts in order
-    const int i = stack.back();
-    stack.pop_back();
-    if (tree.parts[size_t(i)].empty()) leaves.push_back(std::move(tree.nodes[size_t(i)]));
-    for (size_t k = tree.parts[size_t(i)].size(); k-- > 0;) stack.push_back(tree.parts[size_t(i)][k]);
-  }
-  if (limit_reached)
+  collect_charts(s.tree, components.size(), leaves, uncut);
+  if (s.limit_reached)
     notes.push_back("the chart limit (" + std::to_string(options.max_charts) + ") stopped the splitting");
   return {};
 }

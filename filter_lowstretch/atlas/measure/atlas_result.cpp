@@ -155,6 +155,60 @@ void store(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, int vertex_r
 
 namespace {
 
+// A chart's summary before it is measured in the layout.
+Chart chart_summary(const SolvedChart& c, double unit) {
+  Chart chart;
+  chart.kept_whole = c.kept_whole ? c.kept_whole : "its cell's shape stretched it";
+  chart.faces = int(c.faces.size());
+  chart.closed_holes = c.mesh.closed_holes;
+  chart.seam_length = c.mesh.seam_length * unit;
+  chart.chosen_pass = c.map.chosen_pass;
+  chart.passes = int(c.map.passes.size());
+  return chart;
+}
+
+// "6 interior edges ..." -> "some interior edges ...": one note for all counts.
+std::string without_count(const std::string& note) {
+  const size_t digits = note.find_first_not_of("0123456789");
+  return digits > 0 && digits != std::string::npos && note[digits] == ' ' ? "some" + note.substr(digits) : note;
+}
+
+// Notes, each once with the charts it was given for.
+struct NoteGroups {
+  std::vector<std::string> notes;
+  std::vector<std::vector<int>> charts;
+  void add(const std::string& note, int chart) {
+    const size_t k = size_t(std::find(notes.begin(), notes.end(), note) - notes.begin());
+    if (k == notes.size()) {
+      notes.push_back(note);
+      charts.emplace_back();
+    }
+    charts[k].push_back(chart);
+  }
+};
+
+// Every chart above the bound is one note while they are few; past that, one note per reason.
+void note_charts_above_bound(size_t chart_count, double max_stretch, ChartsResult& result) {
+  std::vector<int> above;
+  for (size_t c = 0; c < chart_count; ++c) {
+    Chart& chart = result.charts[c];
+    chart.above_bound = !(chart.l2_stretch <= max_stretch);
+    if (chart.above_bound) above.push_back(int(c));
+  }
+  const size_t listed = 10;
+  for (size_t k = 0; k < above.size() && (above.size() <= listed || k < listed); ++k) {
+    const Chart& chart = result.charts[size_t(above[k])];
+    result.notes.push_back("chart " + std::to_string(above[k]) + " (" + std::to_string(chart.faces) + " faces) keeps L2 stretch " +
+                           number_text(chart.l2_stretch) + " above " + number_text(max_stretch) + ": " + chart.kept_whole);
+  }
+  if (above.size() <= listed) return;
+  NoteGroups reasons;
+  for (int c : above) reasons.add(result.charts[size_t(c)].kept_whole, c);
+  for (size_t k = 0; k < reasons.notes.size(); ++k)
+    result.notes.push_back(charts_text(reasons.charts[k]) + " keep an L2 stretch above " + number_text(max_stretch) + ": " +
+                           reasons.notes[k]);
+}
+
 // One layout of the charts, measured; `flat` faces (in no chart) sit on one point, as one more
 // chart.
 ChartsResult lay_out_and_store(std::vector<SolvedChart>& charts, const std::vector<int>& guests, const std::vector<int>& flat,
@@ -165,28 +219,11 @@ ChartsResult lay_out_and_store(std::vector<SolvedChart>& charts, const std::vect
   std::vector<std::vector<int>> faces_of;
   std::vector<std::vector<ChartPass>> passes;
   std::vector<int> kept;
-  std::vector<std::string> chart_notes;  // the core's notes, each with the charts it was given for
-  std::vector<std::vector<int>> noted;
+  NoteGroups chart_notes;
   for (const SolvedChart& c : charts) {
-    Chart chart;
-    chart.kept_whole = c.kept_whole ? c.kept_whole : "its cell's shape stretched it";
-    chart.faces = int(c.faces.size());
-    chart.closed_holes = c.mesh.closed_holes;
-    chart.seam_length = c.mesh.seam_length * unit;
-    chart.chosen_pass = c.map.chosen_pass;
-    chart.passes = int(c.map.passes.size());
-    result.charts.push_back(chart);
-    result.seam_length += chart.seam_length;
-    for (std::string note : c.map.notes) {
-      const size_t digits = note.find_first_not_of("0123456789");  // "6 interior edges ...": one note for all counts
-      if (digits > 0 && digits != std::string::npos && note[digits] == ' ') note = "some" + note.substr(digits);
-      const size_t k = size_t(std::find(chart_notes.begin(), chart_notes.end(), note) - chart_notes.begin());
-      if (k == chart_notes.size()) {
-        chart_notes.push_back(note);
-        noted.emplace_back();
-      }
-      noted[k].push_back(int(faces_of.size()));
-    }
+    result.charts.push_back(chart_summary(c, unit));
+    result.seam_length += result.charts.back().seam_length;
+    for (const std::string& note : c.map.notes) chart_notes.add(without_count(note), int(faces_of.size()));
     faces_of.push_back(c.faces);
     passes.push_back(c.passes);
     kept.push_back(c.map.chosen_pass);
@@ -203,37 +240,9 @@ ChartsResult lay_out_and_store(std::vector<SolvedChart>& charts, const std::vect
   result.passes = layout_passes(passes, kept);
   result.seam_length += unit * length_between_charts(unit_V, F, result.face_chart);
   store(unit_V, F, vertex_rows, faces_of, options, result);
-  for (size_t k = 0; k < chart_notes.size(); ++k) result.notes.push_back(charts_text(noted[k]) + ": " + chart_notes[k]);
-  // Every chart above the bound is one note while they are few; past that, one note per reason.
-  std::vector<int> above;
-  for (size_t c = 0; c < faces_of.size(); ++c) {
-    Chart& chart = result.charts[c];
-    chart.above_bound = !(chart.l2_stretch <= options.max_stretch);
-    if (chart.above_bound) above.push_back(int(c));
-  }
-  const size_t listed = 10;
-  for (size_t k = 0; k < above.size() && (above.size() <= listed || k < listed); ++k) {
-    const Chart& chart = result.charts[size_t(above[k])];
-    result.notes.push_back("chart " + std::to_string(above[k]) + " (" + std::to_string(chart.faces) + " faces) keeps L2 stretch " +
-                           number_text(chart.l2_stretch) + " above " + number_text(options.max_stretch) + ": " +
-                           chart.kept_whole);
-  }
-  if (above.size() > listed) {
-    std::vector<std::string> reasons;
-    std::vector<std::vector<int>> of;
-    for (int c : above) {
-      const std::string reason = result.charts[size_t(c)].kept_whole;
-      const size_t k = size_t(std::find(reasons.begin(), reasons.end(), reason) - reasons.begin());
-      if (k == reasons.size()) {
-        reasons.push_back(reason);
-        of.emplace_back();
-      }
-      of[k].push_back(c);
-    }
-    for (size_t k = 0; k < reasons.size(); ++k)
-      result.notes.push_back(charts_text(of[k]) + " keep an L2 stretch above " + number_text(options.max_stretch) + ": " +
-                             reasons[k]);
-  }
+  for (size_t k = 0; k < chart_notes.notes.size(); ++k)
+    result.notes.push_back(charts_text(chart_notes.charts[k]) + ": " + chart_notes.notes[k]);
+  note_charts_above_bound(faces_of.size(), options.max_stretch, result);
   return result;
 }
 

@@ -178,6 +178,74 @@ double expected_empty_area(const std::vector<SolvedChart>& charts, const std::ve
   return empty;
 }
 
+// The texel grid of the layout: [0,1]^2 -> grid cells, as store() moves the layout inside the gutter.
+struct GridFrame {
+  int side = 0;       // cells per side
+  int gutter = 0;     // in cells
+  double offset = 0, scale = 1;
+};
+
+// Takes the cells of the tiled charts (not the guests), grown by the gutter, and the border's
+// gutter; returns their texel density, in grid cells^2 per unit of 3D area.
+double take_tiled_charts(const std::vector<SolvedChart>& charts, const std::vector<char>& is_guest,
+                         const Eigen::MatrixXd& corner_uv, const GridFrame& frame, TexelGrid& grid) {
+  double uv_area = 0, area_3d = 0;
+  for (size_t c = 0; c < charts.size(); ++c) {
+    if (is_guest[c]) continue;
+    area_3d += charts[c].kept.area_3d;
+    for (const int f : charts[c].faces) {
+      Eigen::Vector2d p[3];
+      for (int k = 0; k < 3; ++k) p[k] = frame.offset + frame.scale * corner_uv.block(f, 2 * k, 1, 2).transpose().array();
+      uv_area += std::abs(signed_uv_area(p[0], p[1], p[2]));
+      take_triangle(grid, p);
+    }
+  }
+  // From here a taken cell is one a guest may not use.
+  const int side = frame.side, gutter = frame.gutter;
+  grid.grow(gutter);
+  grid.take(0, 0, side, gutter);
+  grid.take(0, side - gutter, side, side);
+  grid.take(0, 0, gutter, side);
+  grid.take(side - gutter, 0, side, side);
+  grid.count_runs(0, side);
+  return area_3d > 0 ? uv_area / area_3d : 0;
+}
+
+// The lowest, then leftmost, free place of a chart's outline of `size` cells, over its turnings.
+bool find_place(const TexelGrid& grid, const SolvedChart& chart, const Eigen::Vector2d& size, int side, Outline& best,
+                int& best_x, int& best_y) {
+  bool found = false;
+  // A box looks the same half a turn round; an outline may fit into other room.
+  const int turnings = chart.fill() >= kLeastGuestFill ? 2 : 4;
+  for (int turns = 0; turns < turnings; ++turns) {
+    Outline outline = outline_of(chart, size, turns);
+    int x = 0, y = 0;
+    if (!grid.first_fit(outline.rows, found ? best_y : side, x, y)) continue;
+    if (!found || std::make_pair(y, x) < std::make_pair(best_y, best_x))
+      best_x = x, best_y = y, best = std::move(outline), found = true;
+  }
+  return found;
+}
+
+// Takes the place's cells (grown by the gutter) and moves the chart's corners there.
+void place_guest(const SolvedChart& chart, int g, const Outline& best, int x, int y, const GridFrame& frame,
+                 TexelGrid& grid, Eigen::MatrixXd& corner_uv, std::vector<int>& face_chart) {
+  const int gutter = frame.gutter;
+  for (size_t r = 0; r < best.rows.size(); ++r)
+    for (const auto& run : best.rows[r])
+      grid.take(x + run.first - gutter, y + int(r) - gutter, x + run.second + gutter, y + int(r) + 1 + gutter);
+  grid.count_runs(y - gutter, y + int(best.rows.size()) + gutter);
+  const Eigen::Vector2d origin(x, y);
+  for (size_t j = 0; j < chart.faces.size(); ++j) {
+    const int f = chart.faces[j];
+    face_chart[size_t(f)] = g;
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector2d in_cells = origin + best.corners[3 * j + size_t(k)];
+      corner_uv.block(f, 2 * k, 1, 2) = ((in_cells.array() - frame.offset) / frame.scale).matrix().transpose();
+    }
+  }
+}
+
 }  // namespace
 
 double expected_empty_share(const std::vector<SolvedChart>& charts, const std::vector<double>& own_area) {
@@ -204,34 +272,16 @@ std::vector<int> charts_to_put_in_empty_texels(const std::vector<SolvedChart>& c
 
 std::vector<int> put_in_empty_texels(const std::vector<SolvedChart>& charts, const std::vector<int>& guests,
                                      const ChartOptions& options, Eigen::MatrixXd& corner_uv, std::vector<int>& face_chart) {
-  const int side = std::min(options.texture_size, kMostGridSide);
-  const double texel = double(options.texture_size) / side;  // texels per grid cell
-  const int gutter = int(std::ceil(options.gutter / texel));
-  // Layout [0,1]^2 -> grid cells, as store() moves the layout inside the gutter.
-  const double offset = options.gutter / texel, scale = (options.texture_size - 2 * options.gutter) / texel;
+  GridFrame frame;
+  frame.side = std::min(options.texture_size, kMostGridSide);
+  const double texel = double(options.texture_size) / frame.side;  // texels per grid cell
+  frame.gutter = int(std::ceil(options.gutter / texel));
+  frame.offset = options.gutter / texel;
+  frame.scale = (options.texture_size - 2 * options.gutter) / texel;
   std::vector<char> is_guest(charts.size(), 0);
   for (const int i : guests) is_guest[size_t(i)] = 1;
-
-  TexelGrid grid(side);
-  double uv_area = 0, area_3d = 0;  // of the tiled charts, for their texel density
-  for (size_t c = 0; c < charts.size(); ++c) {
-    if (is_guest[c]) continue;
-    area_3d += charts[c].kept.area_3d;
-    for (const int f : charts[c].faces) {
-      Eigen::Vector2d p[3];
-      for (int k = 0; k < 3; ++k) p[k] = offset + scale * corner_uv.block(f, 2 * k, 1, 2).transpose().array();
-      uv_area += std::abs(signed_uv_area(p[0], p[1], p[2]));
-      take_triangle(grid, p);
-    }
-  }
-  // Grown by the gutter; the border's gutter too. From here a taken cell is one a guest may not use.
-  grid.grow(gutter);
-  grid.take(0, 0, side, gutter);
-  grid.take(0, side - gutter, side, side);
-  grid.take(0, 0, gutter, side);
-  grid.take(side - gutter, 0, side, side);
-  grid.count_runs(0, side);
-  const double density = area_3d > 0 ? uv_area / area_3d : 0;  // grid cells^2 per unit of 3D area
+  TexelGrid grid(frame.side);
+  const double density = take_tiled_charts(charts, is_guest, corner_uv, frame, grid);
 
   std::vector<int> unplaced;
   std::vector<int> order = guests;  // largest first: small boxes fill the room large ones leave
@@ -246,39 +296,14 @@ std::vector<int> put_in_empty_texels(const std::vector<SolvedChart>& charts, con
       continue;
     }
     const Eigen::Vector2d size = chart.box.sizes() * std::sqrt(density * chart.kept.area_3d / own);  // in cells
-    if (!(size.maxCoeff() <= grid.side())) {  // a sliver longer than the texture (or a degenerate map): no room
-      unplaced.push_back(g);
-      continue;
-    }
     Outline best;
-    int best_x = 0, best_y = 0;
-    bool found = false;
-    // A box looks the same half a turn round; an outline may fit into other room.
-    const int turnings = chart.fill() >= kLeastGuestFill ? 2 : 4;
-    for (int turns = 0; turns < turnings; ++turns) {
-      Outline outline = outline_of(chart, size, turns);
-      int x = 0, y = 0;
-      if (!grid.first_fit(outline.rows, found ? best_y : side, x, y)) continue;
-      if (!found || std::make_pair(y, x) < std::make_pair(best_y, best_x))
-        best_x = x, best_y = y, best = std::move(outline), found = true;
-    }
-    if (!found) {
+    int x = 0, y = 0;
+    // A sliver longer than the texture (or a degenerate map) has no room.
+    if (!(size.maxCoeff() <= grid.side()) || !find_place(grid, chart, size, frame.side, best, x, y)) {
       unplaced.push_back(g);
       continue;
     }
-    for (size_t r = 0; r < best.rows.size(); ++r)
-      for (const auto& run : best.rows[r])
-        grid.take(best_x + run.first - gutter, best_y + int(r) - gutter, best_x + run.second + gutter, best_y + int(r) + 1 + gutter);
-    grid.count_runs(best_y - gutter, best_y + int(best.rows.size()) + gutter);
-    const Eigen::Vector2d origin(best_x, best_y);
-    for (size_t j = 0; j < chart.faces.size(); ++j) {
-      const int f = chart.faces[j];
-      face_chart[size_t(f)] = g;
-      for (int k = 0; k < 3; ++k) {
-        const Eigen::Vector2d in_cells = origin + best.corners[3 * j + size_t(k)];
-        corner_uv.block(f, 2 * k, 1, 2) = ((in_cells.array() - offset) / scale).matrix().transpose();
-      }
-    }
+    place_guest(chart, g, best, x, y, frame, grid, corner_uv, face_chart);
   }
   return unplaced;
 }
