@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "atlas/base/tuning.h"
 #include "atlas/measure/atlas_result.h"
 #include "atlas/bound/cut_invalid_charts.h"
 #include "core/disk_mesh.h"
@@ -96,29 +97,7 @@ double best_possible_efficiency(const std::vector<SolvedChart>& parts) {
   }
   return weighted > 0 ? area / weighted : 0;
 }
-// An atlas this much more efficient than that bound skips laying out one chart per part.
-const double kClearlyBetter = 1.25;
 
-// Normals more than this apart make an edge sharp: a lower angle cuts curved faces into more
-// charts, a higher one leaves sharp edges uncut.
-const double kSharpEdgeDegrees = 80;
-// The share of the area that the sharp edges must split off the parts' largest patches for the
-// model to be tried cut along them: CAD parts split off far more, statues and animals far less
-// (their sharp edges are creases and spikes).
-const double kFacesShare = 0.01;
-// A face of a model cut along its sharp edges is mostly a plane, a cylinder or a fillet, which a free
-// map keeps with little stretch; so a free map need pay less than on a statue. Which of these pays
-// best depends on the part, so both are laid out.
-const double kFreeFacesMustPay[] = {2, 1};
-// How a model made of faces is cut: the patches between edges sharper than `degrees`, cut by
-// stretch to this share of the bound's excess over 1 (0.5: 1.2 -> 1.1).
-struct FacesCut {
-  double degrees, excess_kept;
-};
-// Its faces are mostly flat, so more cuts leave charts that fill their rectangles with little
-// stretch. Edges sharper than 30 degrees also part a large face from its fillets, which stretch
-// on a rectangle shared with it.
-const FacesCut kFacesCuts[] = {{kSharpEdgeDegrees, 1}, {kSharpEdgeDegrees, 0.5}, {30, 0.5}};
 // Whether atlas a uses the texture better than b, or as well with fewer flipped and zero-area triangles.
 bool more_efficient(const ChartsResult& a, const ChartsResult& b) {
   return texture_efficiency(a) > texture_efficiency(b) ||
@@ -126,12 +105,8 @@ bool more_efficient(const ChartsResult& a, const ChartsResult& b) {
           a.layout.flipped + a.layout.degenerate < b.layout.flipped + b.layout.degenerate);
 }
 
-// A cut along gentler edges is tried only while the best atlas has a lower efficiency: it costs
-// time and does not improve an atlas that already uses the texture well.
-const double kGentlerCutBelow = 0.7;
-
 // Whether the sharp edges split the parts into faces of their own (a CAD model), rather than nick
-// them (a statue's creases): the patches beside each part's largest hold kFacesShare of the area.
+// them (a statue's creases): the patches beside each part's largest hold kTuning.faces_share of the area.
 bool has_faces_of_its_own(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const std::vector<int>& component,
                           const std::vector<std::vector<int>>& patches) {
   std::vector<double> largest;
@@ -144,7 +119,7 @@ bool has_faces_of_its_own(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
     largest[part] = std::max(largest[part], area);
     total += area;
   }
-  return total - std::accumulate(largest.begin(), largest.end(), 0.0) >= kFacesShare * total;
+  return total - std::accumulate(largest.begin(), largest.end(), 0.0) >= kTuning.faces_share * total;
 }
 
 // What the candidate atlases of make_atlas share: the mesh in its unit box, the options, and the
@@ -182,7 +157,7 @@ struct AtlasSearch {
   AtlasSearch& operator=(const AtlasSearch&) = delete;
 
   ChartsResult tile(std::vector<SolvedChart> charts) {
-    const bool leaves_room = expected_empty_share(charts, cell_areas(charts)) >= kLeastEmptyShare;
+    const bool leaves_room = expected_empty_share(charts, cell_areas(charts)) >= kTuning.least_empty_share;
     tried = leaves_room ? charts : std::vector<SolvedChart>();
     return atlas_of(std::move(charts), {}, unit_V, F, unit, int(V.rows()), options);
   }
@@ -202,26 +177,26 @@ Error start_search(AtlasSearch& s) {
   if (s.options.disk.boundary != BoundaryShape::Square)
     s.notes.push_back("an atlas maps every chart onto a rectangle: the boundary option applies to disks only");
   s.common_notes = s.notes.size();
-  s.patches = patches_between_sharp_edges(s.unit_V, s.F, kSharpEdgeDegrees);
+  s.patches = patches_between_sharp_edges(s.unit_V, s.F, kTuning.sharp_edge_degrees);
   s.made_of_faces = s.patches.size() > s.components.size() && has_faces_of_its_own(s.unit_V, s.F, s.component, s.patches);
   return {};
 }
 
-// Candidates: the charts between sharp edges (kFacesCuts), each with the charts that stretch
-// mapped free at kFreeFacesMustPay. Gentler cuts only while the best atlas is poor.
+// Candidates: the charts between sharp edges (kTuning.faces_cuts), each with the charts that stretch
+// mapped free at kTuning.free_faces_must_pay. Gentler cuts only while the best atlas is poor.
 Error cut_along_sharp_edges(AtlasSearch& s) {
-  for (const FacesCut& cut : kFacesCuts) {
-    if (cut.degrees != kSharpEdgeDegrees && s.made && !(texture_efficiency(s.result) < kGentlerCutBelow)) continue;
+  for (const FacesCut& cut : kTuning.faces_cuts) {
+    if (cut.degrees != kTuning.sharp_edge_degrees && s.made && !(texture_efficiency(s.result) < kTuning.gentler_cut_below)) continue;
     ChartOptions by_faces_options = s.reporting;
     by_faces_options.max_stretch = 1 + cut.excess_kept * (s.options.max_stretch - 1);
     std::vector<SolvedChart> by_faces_leaves, unused;
     std::vector<std::string> by_faces_notes;
     const Error e = split_until_bounded(
-        s.unit_V, s.F, cut.degrees == kSharpEdgeDegrees ? s.patches : patches_between_sharp_edges(s.unit_V, s.F, cut.degrees),
+        s.unit_V, s.F, cut.degrees == kTuning.sharp_edge_degrees ? s.patches : patches_between_sharp_edges(s.unit_V, s.F, cut.degrees),
         by_faces_options, by_faces_leaves, unused, by_faces_notes);
     if (e.code == ErrorCode::Cancelled) return e;
     if (e) continue;
-    for (const double must_pay : kFreeFacesMustPay) {
+    for (const double must_pay : kTuning.free_faces_must_pay) {
       std::vector<SolvedChart> leaves_of_try = by_faces_leaves;
       free_the_charts_that_stretch(leaves_of_try, s.options, must_pay);
       ChartsResult by_faces = s.tile(std::move(leaves_of_try));
@@ -252,7 +227,7 @@ Error cut_by_stretch(AtlasSearch& s) {
   const size_t cut_into = leaves.size();
   ChartsResult by_stretch = s.tile(std::move(leaves));
   std::vector<SolvedChart> by_stretch_kept = std::move(s.tried);
-  if (!uncut.empty() && !(texture_efficiency(by_stretch) > kClearlyBetter * best_possible_efficiency(uncut))) {
+  if (!uncut.empty() && !(texture_efficiency(by_stretch) > kTuning.clearly_better * best_possible_efficiency(uncut))) {
     ChartsResult whole = s.tile(std::move(uncut));
     if (more_efficient(whole, by_stretch)) {
       by_stretch_notes.push_back("one chart per part: cut into " + std::to_string(cut_into) + " charts, the atlas had efficiency " +
@@ -274,7 +249,7 @@ Error cut_by_stretch(AtlasSearch& s) {
 // Candidates: the best atlas with small charts put into the texels its tiling leaves empty
 // (kGuestChoices), kept where that uses the texture better.
 void put_small_charts_in_empty_texels(AtlasSearch& s) {
-  if (s.kept.empty() || !(s.result.coverage < 1 - kLeastEmptyShare)) return;
+  if (s.kept.empty() || !(s.result.coverage < 1 - kTuning.least_empty_share)) return;
   const double tiled = texture_efficiency(s.result);
   std::vector<SolvedChart> flat_seen;
   for (const GuestChoice& choice : kGuestChoices) {
@@ -488,13 +463,5 @@ double largest_chart_stretch(const ChartsResult& r) {
   return largest;
 }
 
-const char* to_string(NonDisk non_disk) {
-  switch (non_disk) {
-    case NonDisk::Reject: return "reject";
-    case NonDisk::Charts: return "charts";
-    case NonDisk::Atlas: return "atlas";
-  }
-  return "?";
-}
 
 }  // namespace lowstretch

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "atlas/base/tuning.h"
 #include "atlas/charts.h"
 #include "atlas/bound/split_until_bounded.h"
 #include "generated_meshes.h"
@@ -264,7 +265,7 @@ TEST(Atlas, DiskWhoseCutsDoNotPayStaysOneChart) {
 // to cut. Its natural-boundary map keeps its shape.
 TEST(Atlas, SliverWithNoGoodRectangleKeepsItsOwnShape) {
   const testmesh::Mesh band = testmesh::jagged_band(8);
-  ASSERT_LT(band.F.rows(), 2 * kSmallestChart);
+  ASSERT_LT(band.F.rows(), 2 * kTuning.smallest_chart);
   const testmesh::Mesh m = testmesh::joined(testmesh::sphere(10, 16), band, 1, Eigen::RowVector3d(40, 0, 0));
   const ChartsResult atlas = atlas_of(m);
   expect_valid_layout(m.F, atlas);
@@ -283,8 +284,8 @@ TEST(Atlas, SmallChartFarAboveTheBoundIsCut) {
   const ChartsResult r = atlas_of(m);
   expect_valid_layout(m.F, r);
   for (size_t c = 0; c < r.charts.size(); ++c)
-    if (r.charts[c].faces >= kSmallestCutChart)
-      EXPECT_LE(r.charts[c].l2_stretch, kSmallCutAbove * ChartOptions().max_stretch) << "chart " << c;
+    if (r.charts[c].faces >= kTuning.smallest_cut_chart)
+      EXPECT_LE(r.charts[c].l2_stretch, kTuning.small_cut_above * ChartOptions().max_stretch) << "chart " << c;
   EXPECT_LT(r.layout.l2_stretch, 1.6);
 }
 

@@ -3,6 +3,7 @@
 
 #include <vector>
 
+#include "atlas/base/tuning.h"
 #include "atlas/chart_map/free_charts.h"
 #include "atlas/chart_map/solved_chart.h"
 #include "generated_meshes.h"
@@ -32,7 +33,7 @@ TEST(FreeCharts, FlatChartIsSeenAlongItsNormalAndCurvedOneKeepsItsRectangle) {
   ASSERT_FALSE(charts[0].map.error);
   ASSERT_FALSE(charts[1].map.error);
   const double web_on_rectangle = charts[0].kept.l2_stretch, cap_on_rectangle = charts[1].kept.l2_stretch;
-  EXPECT_GT(web_on_rectangle, kFlatBelow);
+  EXPECT_GT(web_on_rectangle, kTuning.flat_below);
   see_flat_charts_along_normal(charts);
   EXPECT_TRUE(charts[0].free_boundary);
   EXPECT_NEAR(charts[0].kept.l2_stretch, 1.0, 1e-9);

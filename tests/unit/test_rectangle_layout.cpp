@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "atlas/base/tuning.h"
 #include "atlas/pack/rectangle_layout.h"
 
 using namespace lowstretch;
@@ -55,10 +56,10 @@ TEST(RectangleLayout, FourSquaresMakeAGrid) {
 
 // Rows along the shorter side alone put two of these charts in cells 3.84 and 3.125 times off
 // their shape, so that they fill only part of them; rows along the longer side keep every chart
-// within kMostCellMismatch.
+// within kTuning.most_cell_mismatch.
 TEST(RectangleLayout, EveryChartFitsItsCellWhenAnotherTilingAllowsIt) {
   const std::vector<double> areas = {3, 1, 3, 1}, preferred = {0.5, 1, 4, 4};
   const std::vector<Eigen::AlignedBox2d> cells = slice_unit_square(areas, preferred);
   expect_tiling(areas, cells);
-  for (size_t i = 0; i < cells.size(); ++i) EXPECT_LE(mismatch(cells[i], preferred[i]), kMostCellMismatch + 1e-9) << i;
+  for (size_t i = 0; i < cells.size(); ++i) EXPECT_LE(mismatch(cells[i], preferred[i]), kTuning.most_cell_mismatch + 1e-9) << i;
 }

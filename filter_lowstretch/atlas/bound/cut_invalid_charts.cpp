@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "atlas/base/tuning.h"
 #include "core/half_edges.h"
 #include "atlas/cut/mesh_components.h"
 #include "atlas/cut/split_chart.h"
@@ -32,18 +33,13 @@ std::vector<std::vector<int>> connected_parts(const std::vector<int>& faces, con
   return parts;
 }
 
-// A UV triangle under this share of the texture is lost to every texture size and to rounding
-// (a 1024^2 texel is 1e-6 of it): a sliver of a reconstruction, mapped to scale. The atlas
-// benchmark counts one under 1e-12 of the layout's square as zero-area.
-const double kLeastUvArea = 1e-11;
-
 }  // namespace
 
 std::vector<int> invalid_faces(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& corner_uv) {
   std::vector<int> invalid;
   for (Eigen::Index f = 0; f < F.rows(); ++f)
     // A flat face may map to zero area; folded, its neighbours overlap.
-    if (is_flat_face(unit_V, F, f) ? stored_area(corner_uv, f) < 0 : !(stored_area(corner_uv, f) > kLeastUvArea))
+    if (is_flat_face(unit_V, F, f) ? stored_area(corner_uv, f) < 0 : !(stored_area(corner_uv, f) > kTuning.least_uv_area))
       invalid.push_back(int(f));
   return invalid;
 }

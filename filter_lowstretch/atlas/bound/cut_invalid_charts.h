@@ -7,7 +7,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "atlas/charts.h"
+#include "atlas/base/atlas_types.h"
 #include "atlas/chart_map/solved_chart.h"
 
 namespace lowstretch {
@@ -26,8 +26,5 @@ void cut_invalid_charts(std::vector<SolvedChart>& charts, std::vector<int>& gues
                         const std::vector<int>& invalid, const std::vector<int>& stretched, bool into_faces,
                         const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const ChartOptions& options,
                         std::vector<int>& flat);
-
-// Pieces cut for validity with an L2 stretch this many times the bound are cut again.
-constexpr double kPieceFarAbove = 2;
 
 }  // namespace lowstretch

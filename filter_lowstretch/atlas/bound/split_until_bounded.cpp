@@ -7,6 +7,7 @@
 #include <numeric>
 #include <utility>
 
+#include "atlas/base/tuning.h"
 #include "atlas/chart_map/chart_threads.h"
 #include "core/half_edges.h"
 #include "atlas/cut/split_chart.h"
@@ -17,26 +18,14 @@ namespace {
 
 const double kInf = std::numeric_limits<double>::infinity();
 
-// How many more times the largest part of a chart is cut before any part is mapped: a chart far
-// above the bound is mostly a body with protrusions, which the cuts take off one at a time, and
-// mapping the body again after each would take most of the time. One more cut per doubling of
-// the L2 stretch over the bound; none for a chart with flipped triangles, whose stretch says
-// little, unless they are a few slivers of a reconstruction (under kFewInvalid of its faces):
-// then the stretch of the others counts.
-const double kFewInvalid = 1e-3;
+// How many more times the largest part of a chart is cut before any part is mapped (the tuning
+// of cuts ahead says why).
 int cuts_ahead(const ChartPass& p, size_t faces, const ChartOptions& options) {
-  const bool few_invalid = double(p.flipped + p.degenerate) <= kFewInvalid * double(faces);
+  const bool few_invalid = double(p.flipped + p.degenerate) <= kTuning.few_invalid * double(faces);
   const double l2 = p.flipped + p.degenerate == 0 ? p.l2_stretch : few_invalid ? p.l2_of_valid : 0;
   if (!std::isfinite(l2) || !(l2 > 0)) return 0;
   return std::min(options.most_cuts_ahead, std::max(0, int(std::floor(std::log2(l2 / options.max_stretch)))));
 }
-// Only parts this large are cut ahead: smaller ones are cheap to map, and cutting them unmapped
-// can change the atlas.
-const int kLeastCutAhead = 3000;  // faces
-// And only a body, a part that kept two thirds of the faces of the chart it was cut from: the parts
-// of a chart cut nearer its middle may meet the bound, and cutting them unmapped makes more charts
-// for a worse atlas.
-const double kLeastBodyShare = 0.67;
 
 // A chart's cut: its parts, then the parts of its largest part cut ahead, and so on; parent: -1
 // for a part of the chart itself, else the index of the piece it was cut from. Every piece but
@@ -73,7 +62,7 @@ Cut cut_with_cuts_ahead(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F,
     for (size_t j = first; j < cut.pieces.size(); ++j)
       if (cut.pieces[j].faces.size() > cut.pieces[largest].faces.size()) largest = j;
     const size_t faces = cut.pieces[largest].faces.size();
-    if (int(faces) < kLeastCutAhead || double(faces) < kLeastBodyShare * double(cut_faces)) break;
+    if (int(faces) < kTuning.least_cut_ahead || double(faces) < kTuning.least_body_share * double(cut_faces)) break;
     level_start.push_back(cut.pieces.size());
     if (!add_parts(cut.pieces[largest].faces, int(largest))) {
       level_start.pop_back();
@@ -156,48 +145,30 @@ void undo_cuts_that_did_not_pay(ChartTree& tree, double max_stretch, const std::
   }
 }
 
-// The multigrid's relative residual for the maps that decide the cuts (the final maps keep the
-// method's 1e-10): loose enough to be quick, tight enough to give the same charts; a looser one
-// can cut a chart that the full solve would keep whole.
-const double kDecidingTolerance = 1e-8;
-
-// Where the square may turn a chart that the bound cuts into one it keeps: only charts a little
-// above the bound on their own rectangle get under it on the square. Above, the chart is cut
-// whatever its map: its square would only cost a second solve.
-const double kSquareMayMeet = 1.5;
-
 // The map that decides whether a chart is cut: onto its own rectangle, or the square where that
 // may bring it under the bound (a chart too small to cut takes the better of the two).
 void map_to_decide(SolvedChart& chart, const Options& deciding, double max_stretch) {
-  const bool may_cut = int(chart.faces.size()) >= 2 * kSmallestChart;
-  solve_chart(chart, deciding, 0, may_cut ? kSquareMayMeet * max_stretch : kInf);
+  const bool may_cut = int(chart.faces.size()) >= 2 * kTuning.smallest_chart;
+  solve_chart(chart, deciding, 0, may_cut ? kTuning.square_may_meet * max_stretch : kInf);
   chart.deciding_map = true;
 }
 
-// Multigrid iterations for a deciding map before the sparse LU takes over: on a large body that
-// does not converge, every further iteration is time lost before the LU.
-const int kDecidingIterations = 20;
-
 // Deciding where to cut needs the map's stretch, not its last digits: U0 and U1 only, solved to
-// kDecidingTolerance, give the same cuts in less time. The layout maps each chart fully.
+// kTuning.deciding_tolerance, give the same cuts in less time. The layout maps each chart fully.
 Options deciding_options(Options deciding) {
   deciding.max_passes = std::min(deciding.max_passes, 1);
-  deciding.solver.tolerance = std::max(deciding.solver.tolerance, kDecidingTolerance);
+  deciding.solver.tolerance = std::max(deciding.solver.tolerance, kTuning.deciding_tolerance);
   deciding.solver.residual_accepted = std::max(deciding.solver.residual_accepted, 100 * deciding.solver.tolerance);
-  deciding.solver.max_iterations = std::min(deciding.solver.max_iterations, kDecidingIterations);
+  deciding.solver.max_iterations = std::min(deciding.solver.max_iterations, kTuning.deciding_iterations);
   return deciding;
 }
 
-// A chart of fewer than 2 x kSmallestChart faces stays whole unless it stretches more than
-// kSmallCutAbove times the bound and has kSmallestCutChart faces or more (charts.h), or has two
-// faces or more and stretches more than kTinyCutAbove times the bound: no chart is too small to
-// cut, since a single triangle maps without stretch.
-const double kTinyCutAbove = 8;
+// Whether a chart the bound cuts stays whole for its size (AtlasTuning::smallest_chart).
 bool too_small_to_cut(const SolvedChart& chart, double max_stretch) {
   const int faces = int(chart.faces.size());
-  if (faces >= 2 * kSmallestChart) return false;
-  if (faces >= 2 && !(chart.kept.l2_stretch <= kTinyCutAbove * max_stretch)) return false;
-  return faces < kSmallestCutChart || chart.kept.l2_stretch <= kSmallCutAbove * max_stretch;
+  if (faces >= 2 * kTuning.smallest_chart) return false;
+  if (faces >= 2 && !(chart.kept.l2_stretch <= kTuning.tiny_cut_above * max_stretch)) return false;
+  return faces < kTuning.smallest_cut_chart || chart.kept.l2_stretch <= kTuning.small_cut_above * max_stretch;
 }
 
 // One split_until_bounded: the mesh, the tree of charts and their cuts, and the chart count.
@@ -308,7 +279,7 @@ bool parts_meet_the_bound(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
 Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, std::vector<std::vector<int>> components,
                           const ChartOptions& options, std::vector<SolvedChart>& leaves, std::vector<SolvedChart>& uncut,
                           std::vector<std::string>& notes) {
-  Splitting s{unit_V, F, options, opposite_half_edges(F), std::vector<std::vector<int>>(kMostThreads), ChartTree(), 0, false};
+  Splitting s{unit_V, F, options, opposite_half_edges(F), std::vector<std::vector<int>>(kTuning.most_threads), ChartTree(), 0, false};
   s.local_of[0].assign(size_t(unit_V.rows()), -1);
   for (std::vector<int>& faces : components) {
     s.tree.nodes.emplace_back();

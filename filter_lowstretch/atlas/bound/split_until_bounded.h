@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "atlas/charts.h"
+#include "atlas/base/atlas_types.h"
 #include "atlas/chart_map/solved_chart.h"
 
 namespace lowstretch {

@@ -1,5 +1,7 @@
 #include "atlas/chart_map/chart_threads.h"
 
+#include "atlas/base/tuning.h"
+
 #include <algorithm>
 #include <atomic>
 #include <thread>
@@ -7,7 +9,7 @@
 namespace lowstretch {
 
 void for_each_index(int count, const std::function<void(int, int)>& job, const std::vector<int>& order) {
-  const int threads = std::max(1, std::min<int>(int(std::thread::hardware_concurrency()), std::min(count, kMostThreads)));
+  const int threads = std::max(1, std::min<int>(int(std::thread::hardware_concurrency()), std::min(count, kTuning.most_threads)));
   std::atomic<int> next{0};
   const auto work = [&](int worker) {
     for (int k = next++; k < count; k = next++) job(order.empty() ? k : order[size_t(k)], worker);

@@ -1,4 +1,4 @@
-// How the charts share the cores: a job per chart on up to kMostThreads threads, largest charts
+// How the charts share the cores: a job per chart on up to kTuning.most_threads threads, largest charts
 // first, and the solver options of a chart among those solved at once. A job's result depends on
 // its chart alone, so an atlas is the same every run whatever the threads do.
 #pragma once
@@ -6,16 +6,15 @@
 #include <functional>
 #include <vector>
 
+#include "atlas/base/tuning.h"
 #include "core/parameterize.h"
 #include "atlas/chart_map/solved_chart.h"
 
 namespace lowstretch {
 
-constexpr int kMostThreads = 8;
-
-// Runs job(i, worker) for i < count on up to kMostThreads threads, each taking the next index
+// Runs job(i, worker) for i < count on up to kTuning.most_threads threads, each taking the next index
 // left, in `order` (largest charts first, so that no thread is left with a big one at the end);
-// worker (0 .. kMostThreads - 1) names the thread, for scratch space. A job's result depends on
+// worker (0 .. kTuning.most_threads - 1) names the thread, for scratch space. A job's result depends on
 // its index alone, never on the thread or the timing, so the atlas is the same every run.
 void for_each_index(int count, const std::function<void(int, int)>& job, const std::vector<int>& order = {});
 

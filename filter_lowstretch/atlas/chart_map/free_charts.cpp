@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "atlas/base/tuning.h"
 #include "atlas/chart_map/boundary_crossing.h"
 #include "atlas/chart_map/chart_threads.h"
 #include "atlas/chart_map/plane_projection.h"
@@ -76,7 +77,7 @@ void see_flat_charts_along_normal(std::vector<SolvedChart>& charts) {
     if (chart.free_boundary) return;
     SolvedChart seen = unmapped_copy(chart);
     map_as_seen_along_normal(seen);
-    if (seen.kept.flipped + seen.kept.degenerate > 0 || !(seen.kept.l2_stretch <= kFlatBelow) ||
+    if (seen.kept.flipped + seen.kept.degenerate > 0 || !(seen.kept.l2_stretch <= kTuning.flat_below) ||
         !(seen.kept.l2_stretch < chart.kept.l2_stretch))
       return;
     if (crosses_itself(seen)) return;

@@ -3,14 +3,11 @@
 #pragma once
 #include <vector>
 
-#include "atlas/charts.h"
+#include "atlas/base/tuning.h"
+#include "atlas/base/atlas_types.h"
 #include "atlas/chart_map/solved_chart.h"
 
 namespace lowstretch {
-
-// How much better a free map must use its box: the rectangle's further passes and the free
-// chart's cell, rarely of its shape, eat smaller gains.
-constexpr double kFreeMustPay = 4;
 
 // A chart whose rectangle uses its box poorly (kept above the bound: too small to cut, or its parts
 // stretched more; or a hole closed for the map left empty) is mapped again free: with the natural
@@ -18,10 +15,7 @@ constexpr double kFreeMustPay = 4;
 // folds). It keeps the free map that uses its box best (fill / L2^2) if that beats the rectangle
 // `must_pay` times and it does not fold over itself: a jagged sliver has no good rectangle, but
 // maps free with little stretch.
-void free_the_charts_that_stretch(std::vector<SolvedChart>& charts, const ChartOptions& options, double must_pay = kFreeMustPay);
-
-// A chart seen along its normal at this L2 stretch or less is flat (a face of a CAD part).
-constexpr double kFlatBelow = 1.02;
+void free_the_charts_that_stretch(std::vector<SolvedChart>& charts, const ChartOptions& options, double must_pay = kTuning.free_must_pay);
 
 // Every flat chart on a rectangle that its own shape, seen along its normal, stretches less (a
 // rectangle stretches a round or bent face) is mapped so, if that does not fold over itself. Its

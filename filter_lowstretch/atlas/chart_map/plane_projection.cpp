@@ -1,13 +1,11 @@
 #include "atlas/chart_map/plane_projection.h"
 
+#include "atlas/base/tuning.h"
+
 #include <Eigen/Geometry>
 #include <cmath>
 
 namespace lowstretch {
-
-// The turns tried within a quarter turn: the best is at most half a step (0.7 degrees) off the
-// turn of the smallest box, which for a 4 x 1 strip makes its box at most 5% larger.
-const int kProjectionTurns = 64;
 
 Eigen::MatrixXd project_onto_own_plane(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();
@@ -22,8 +20,8 @@ Eigen::MatrixXd project_onto_own_plane(const Eigen::MatrixXd& V, const Eigen::Ma
   plane.col(0) = V * x;
   plane.col(1) = V * y;
   double best_area = INFINITY, best_angle = 0;
-  for (int k = 0; k < kProjectionTurns; ++k) {
-    const double angle = 0.5 * M_PI * k / kProjectionTurns, c = std::cos(angle), s = std::sin(angle);
+  for (int k = 0; k < kTuning.projection_turns; ++k) {
+    const double angle = 0.5 * M_PI * k / kTuning.projection_turns, c = std::cos(angle), s = std::sin(angle);
     Eigen::AlignedBox2d box;
     for (Eigen::Index f = 0; f < F.rows(); ++f)
       for (int j = 0; j < 3; ++j) {

@@ -5,6 +5,7 @@
 #include <limits>
 #include <utility>
 
+#include "atlas/base/tuning.h"
 #include "core/boundary_loops.h"
 #include "atlas/cut/close_holes.h"
 #include "atlas/cut/cut_graph.h"
@@ -24,10 +25,6 @@ const double kInf = std::numeric_limits<double>::infinity();
 bool better_pass(const ChartPass& a, const ChartPass& b) {
   return std::make_pair(a.flipped + a.degenerate, a.l2_stretch) < std::make_pair(b.flipped + b.degenerate, b.l2_stretch);
 }
-
-// The tips of a chart's boundary ears go a quarter of their chord out of the rectangle: a cut
-// along mesh edges leaves many ears, which a straight side squeezes to slivers that stretch.
-const double kEarBulge = 0.25;
 
 }  // namespace
 
@@ -130,7 +127,7 @@ void solve_onto(SolvedChart& chart, Options options, double aspect, bool free_bo
   options.boundary = free_boundary ? BoundaryShape::Natural : BoundaryShape::Square;
   options.rectangle_aspect = aspect;
   options.corners_at_turns = true;
-  options.ear_bulge = kEarBulge;
+  options.ear_bulge = kTuning.ear_bulge;
   options.progress = nullptr;  // called from worker threads: the caller reports between rounds
   chart.free_boundary = free_boundary;
   chart.deciding_map = false;

@@ -8,7 +8,7 @@
 #include <limits>
 #include <vector>
 
-#include "atlas/charts.h"
+#include "atlas/base/atlas_types.h"
 #include "core/parameterize.h"
 
 namespace lowstretch {

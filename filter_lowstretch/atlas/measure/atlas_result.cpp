@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "atlas/base/tuning.h"
 #include "atlas/bound/cut_invalid_charts.h"
 #include "core/half_edges.h"
 #include "atlas/pack/lay_out_charts.h"
@@ -246,10 +247,6 @@ ChartsResult lay_out_and_store(std::vector<SolvedChart>& charts, const std::vect
   return result;
 }
 
-// Rounds of cutting the charts with invalid faces and laying out again; the last cuts them into
-// single faces.
-const int kMostRepairRounds = 3;
-
 }  // namespace
 
 ChartsResult atlas_of(std::vector<SolvedChart> charts, std::vector<int> guests, const Eigen::MatrixXd& unit_V,
@@ -264,11 +261,11 @@ ChartsResult atlas_of(std::vector<SolvedChart> charts, std::vector<int> guests, 
     std::vector<int> stretched;
     for (size_t c = 0; c < charts.size() && !result.error; ++c) {
       const SolvedChart& chart = charts[c];
-      const bool far_above = chart.cut_for_validity && !(result.charts[c].l2_stretch <= kPieceFarAbove * options.max_stretch);
+      const bool far_above = chart.cut_for_validity && !(result.charts[c].l2_stretch <= kTuning.piece_far_above * options.max_stretch);
       const bool folds = !chart.map.passes.empty() && chart.map.passes.at(size_t(chart.map.chosen_pass)).flipped > 0;
       if (chart.faces.size() > 1 && (far_above || folds)) stretched.push_back(int(c));
     }
-    if ((invalid.empty() && stretched.empty()) || round == kMostRepairRounds) {
+    if ((invalid.empty() && stretched.empty()) || round == kTuning.most_repair_rounds) {
       if (cut > 0)
         result.notes.push_back(std::to_string(cut) + (cut == 1 ? " chart" : " charts") +
                                " with flipped or zero-area triangles cut smaller and laid out again");
@@ -278,7 +275,7 @@ ChartsResult atlas_of(std::vector<SolvedChart> charts, std::vector<int> guests, 
     for (const int f : invalid) invalid_charts.push_back(result.face_chart[size_t(f)]);
     std::sort(invalid_charts.begin(), invalid_charts.end());
     cut += size_t(std::unique(invalid_charts.begin(), invalid_charts.end()) - invalid_charts.begin());
-    cut_invalid_charts(charts, guests, result.face_chart, invalid, stretched, round + 1 == kMostRepairRounds, unit_V, F,
+    cut_invalid_charts(charts, guests, result.face_chart, invalid, stretched, round + 1 == kTuning.most_repair_rounds, unit_V, F,
                        options, flat);
   }
 }

@@ -5,7 +5,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "atlas/charts.h"
+#include "atlas/base/atlas_types.h"
 #include "atlas/chart_map/solved_chart.h"
 
 namespace lowstretch {

@@ -5,17 +5,12 @@
 #include <limits>
 #include <numeric>
 
+#include "atlas/base/tuning.h"
 #include "core/stretch.h"
 
 namespace lowstretch {
 
 namespace {
-
-// A chart whose real faces cover this share of its box is seen as its box.
-const double kLeastGuestFill = 0.9;
-// The grid is the texture's texels up to this many per side, coarser beyond (a 65536^2 grid
-// would take 4 GiB).
-const int kMostGridSide = 2048;
 
 // Which cells of a square grid are taken (a chart, or within the gutter of one), and for each
 // cell how many free cells follow it in its row: a box fits where every row it spans has room.
@@ -216,7 +211,7 @@ bool find_place(const TexelGrid& grid, const SolvedChart& chart, const Eigen::Ve
                 int& best_x, int& best_y) {
   bool found = false;
   // A box looks the same half a turn round; an outline may fit into other room.
-  const int turnings = chart.fill() >= kLeastGuestFill ? 2 : 4;
+  const int turnings = chart.fill() >= kTuning.least_guest_fill ? 2 : 4;
   for (int turns = 0; turns < turnings; ++turns) {
     Outline outline = outline_of(chart, size, turns);
     int x = 0, y = 0;
@@ -258,7 +253,7 @@ std::vector<int> charts_to_put_in_empty_texels(const std::vector<SolvedChart>& c
   const double empty = expected_empty_area(charts, own_area);
   std::vector<int> candidates;
   for (size_t i = 0; i < charts.size(); ++i)
-    if (choice.any_shape || (!charts[i].leaves_box_empty() && charts[i].fill() >= kLeastGuestFill)) candidates.push_back(int(i));
+    if (choice.any_shape || (!charts[i].leaves_box_empty() && charts[i].fill() >= kTuning.least_guest_fill)) candidates.push_back(int(i));
   std::stable_sort(candidates.begin(), candidates.end(), [&](int a, int b) { return own_area[size_t(a)] < own_area[size_t(b)]; });
   std::vector<int> guests;
   double taken = 0;  // texels of the guests' own triangles
@@ -273,7 +268,7 @@ std::vector<int> charts_to_put_in_empty_texels(const std::vector<SolvedChart>& c
 std::vector<int> put_in_empty_texels(const std::vector<SolvedChart>& charts, const std::vector<int>& guests,
                                      const ChartOptions& options, Eigen::MatrixXd& corner_uv, std::vector<int>& face_chart) {
   GridFrame frame;
-  frame.side = std::min(options.texture_size, kMostGridSide);
+  frame.side = std::min(options.texture_size, kTuning.most_grid_side);
   const double texel = double(options.texture_size) / frame.side;  // texels per grid cell
   frame.gutter = int(std::ceil(options.gutter / texel));
   frame.offset = options.gutter / texel;

@@ -9,13 +9,10 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "atlas/charts.h"
+#include "atlas/base/atlas_types.h"
 #include "atlas/chart_map/solved_chart.h"
 
 namespace lowstretch {
-
-// Below this share of empty texels, filling them gains too little to pay for another layout.
-constexpr double kLeastEmptyShare = 0.05;
 
 // The share of the tiling's texels that its free charts and closed holes are expected to leave
 // empty (own_area: each chart's cell area in the tiling, area / fill for those that do not fill it).

@@ -5,6 +5,7 @@
 #include <numeric>
 #include <string>
 
+#include "atlas/base/tuning.h"
 #include "atlas/chart_map/chart_threads.h"
 #include "atlas/pack/empty_texels.h"
 #include "atlas/pack/rectangle_layout.h"
@@ -23,9 +24,6 @@ void stretch_to_aspect(SolvedChart& chart, double aspect) {
   chart.kept = measure_real_faces(chart.mesh, chart.map.uv);
   chart.passes.at(size_t(chart.map.chosen_pass)) = chart.kept;
 }
-
-// Above this share of the texture in cells raised to the smallest a gutter allows, a note says so.
-const double kMostFlooredShare = 0.1;
 
 }  // namespace
 
@@ -53,7 +51,7 @@ Error tile(const std::vector<SolvedChart>& charts, const std::vector<char>& tile
     own_area.push_back(all_areas[i]);
     total += own_area.back();
     // Cells no longer than four times their width, whatever the chart: a long thin cell has no
-    // room for its gutter (the chart then fills part of it, kMostCellMismatch).
+    // room for its gutter (the chart then fills part of it, kTuning.most_cell_mismatch).
     preferred.push_back(std::min(4.0, std::max(0.25, charts[i].aspect())));
   }
   // Every cell at least a few texels wide inside its gutter, whatever its chart's area: tiny
@@ -76,7 +74,7 @@ Error tile(const std::vector<SolvedChart>& charts, const std::vector<char>& tile
   }
   // Debris: many tiny parts, each given a cell it cannot fill, leave the rest of the mesh little
   // texture.
-  if (floored_share > kMostFlooredShare)
+  if (floored_share > kTuning.most_floored_share)
     notes.push_back(std::to_string(floored) + " charts too small for the " + std::to_string(options.texture_size) +
                     "-texel texture take " + std::to_string(int(std::lround(100 * floored_share))) +
                     "% of it: remove tiny parts (MeshLab: Cleaning and Repairing > Remove Isolated pieces) "
@@ -105,7 +103,7 @@ void fit_to_cells(std::vector<SolvedChart>& charts, const std::vector<char>& til
     // A cell far from the chart's shape (a small chart beside a large one gets a strip) is
     // filled only in part: stretching the chart to fit would cost more than the empty texels.
     const double fits = turned[size_t(i)] ? 1 / cell : cell;
-    const double wanted = std::min(c.aspect() * kMostCellMismatch, std::max(c.aspect() / kMostCellMismatch, fits));
+    const double wanted = std::min(c.aspect() * kTuning.most_cell_mismatch, std::max(c.aspect() / kTuning.most_cell_mismatch, fits));
     if (c.free_boundary) {  // stretched to its cell's shape as far as a rectangle would be
       if (std::abs(std::log(wanted / c.aspect())) > 0.02) stretch_to_aspect(c, wanted);
       return;
@@ -152,10 +150,6 @@ Error write_tiled_corners(const std::vector<SolvedChart>& charts, const std::vec
   return {};
 }
 
-// Tries to put the guests into empty texels this many times, the guests without room going back
-// into the tiling each time (which makes every cell smaller, and so the room).
-const int kMostGuestRounds = 3;
-
 }  // namespace
 
 Error lay_out(std::vector<SolvedChart>& charts, const ChartOptions& options, Eigen::Index face_count,
@@ -180,7 +174,7 @@ Error lay_out(std::vector<SolvedChart>& charts, const ChartOptions& options, Eig
       if (!left.empty()) result.notes.push_back(std::to_string(left.size()) + " small charts put into texels the tiling left empty");
       return {};
     }
-    if (round + 1 == kMostGuestRounds) return {ErrorCode::ChartsNotPacked, static_cast<long long>(charts.size()), ""};
+    if (round + 1 == kTuning.most_guest_rounds) return {ErrorCode::ChartsNotPacked, static_cast<long long>(charts.size()), ""};
     for (const int i : unplaced) tiled[size_t(i)] = 1;
   }
 }

@@ -1,5 +1,7 @@
 #include "atlas/pack/rectangle_layout.h"
 
+#include "atlas/base/tuning.h"
+
 #include <algorithm>
 #include <numeric>
 #include <utility>
@@ -17,9 +19,9 @@ double mismatch(double cell, double preferred) {
 
 // What a cell `m` times off its chart's shape costs, per unit of the chart's area, as a factor on
 // L2^2 over coverage: stretching a chart m times one way gives L2^2 (m + 1/m) / 2; beyond
-// kMostCellMismatch the chart keeps that stretch and fills only part of its cell.
+// kTuning.most_cell_mismatch the chart keeps that stretch and fills only part of its cell.
 double cost(double m) {
-  const double most = kMostCellMismatch;
+  const double most = kTuning.most_cell_mismatch;
   if (m <= most) return 0.5 * (m + 1 / m);
   return 0.5 * (most + 1 / most) * m / most;
 }
@@ -101,7 +103,7 @@ std::vector<Eigen::AlignedBox2d> slice_unit_square(const std::vector<double>& ar
       std::pair<double, double> c(0, 0);
       for (size_t i = 0; i < cells.size(); ++i) {
         const double m = mismatch(cells[i].sizes().x() / cells[i].sizes().y(), preferred[i]);
-        if (m > kMostCellMismatch * 1.02) c.first += shares[i];  // the layout's tolerance: 2% off the shape
+        if (m > kTuning.most_cell_mismatch * 1.02) c.first += shares[i];  // the layout's tolerance: 2% off the shape
         c.second += shares[i] * cost(m);
       }
       if (best.empty() || c < best_cost) {

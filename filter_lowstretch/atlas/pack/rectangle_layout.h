@@ -14,10 +14,6 @@
 
 namespace lowstretch {
 
-// How far from its own shape a chart may be stretched to fill its cell (width / height ratio);
-// a cell further off is filled only in part.
-constexpr double kMostCellMismatch = 2;
-
 // areas: one positive number per chart; preferred: the width / height each chart fits best (a
 // chart may turn a quarter, so 2 and 1/2 are the same). Returns each chart's cell; the cells tile
 // [0,1]^2.

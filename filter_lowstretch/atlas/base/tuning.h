@@ -1,0 +1,115 @@
+// The atlas's tuning: every number that was chosen by measuring, in one place, each with its
+// reason. tests/bench/README.md gives the benchmarks that chose them.
+#pragma once
+
+namespace lowstretch {
+
+// How a model made of faces is cut: the patches between edges sharper than `degrees`, cut by
+// stretch to this share of the bound's excess over 1 (0.5: 1.2 -> 1.1).
+struct FacesCut {
+  double degrees, excess_kept;
+};
+
+struct AtlasTuning {
+  // --- Cutting into charts (cut/, bound/) ---
+  // Smaller charts cut coarse models better, at the cost of more seams and gutters.
+  int smallest_chart = 15;
+  // A chart of fewer than 2 x smallest_chart faces stays whole unless it stretches more than
+  // small_cut_above times the bound and has smallest_cut_chart faces or more (a spike's tip or a
+  // crease left in a small part can raise the L2 stretch of the whole atlas; cutting smaller charts
+  // too would split a finely meshed CAD part into more charts than a tiling can hold), or has two
+  // faces or more and stretches more than tiny_cut_above times the bound (a single triangle maps
+  // without stretch).
+  double small_cut_above = 2;
+  int smallest_cut_chart = 8;  // faces
+  double tiny_cut_above = 8;
+  // Cuts ahead (a chart's largest part cut again before any part is mapped, once per doubling of
+  // its L2 stretch over the bound): a chart far above the bound is mostly a body with protrusions,
+  // which the cuts take off one at a time, and mapping the body after each would take most of the
+  // time. None for a chart with flipped triangles, whose stretch says little, unless they are a few
+  // slivers of a reconstruction (under few_invalid of its faces): then the others' stretch counts.
+  double few_invalid = 1e-3;
+  // Only parts this large are cut ahead: smaller ones are cheap to map, and cutting them unmapped
+  // can change the atlas.
+  int least_cut_ahead = 3000;  // faces
+  // And only a body, a part that kept two thirds of the faces of the chart it was cut from: parts
+  // cut nearer the middle may meet the bound, and cutting them unmapped makes a worse atlas.
+  double least_body_share = 0.67;
+  // The multigrid's relative residual for the maps that decide the cuts (the final maps keep the
+  // method's 1e-10): loose enough to be quick, tight enough to give the same charts.
+  double deciding_tolerance = 1e-8;
+  // Multigrid iterations for a deciding map before the sparse LU takes over: on a large body that
+  // does not converge, every further iteration is time lost before the LU.
+  int deciding_iterations = 20;
+  // Only charts a little above the bound on their own rectangle get under it on the square; above
+  // this, the chart is cut whatever its map, and its square would only cost a second solve.
+  double square_may_meet = 1.5;
+  // Pieces cut for validity with an L2 stretch this many times the bound are cut again.
+  double piece_far_above = 2;
+  // A UV triangle under this share of the texture is lost to every texture size and to rounding
+  // (a 1024^2 texel is 1e-6 of it): a sliver of a reconstruction, mapped to scale.
+  double least_uv_area = 1e-11;
+  // Rounds of cutting the charts with invalid faces and laying out again; the last cuts them into
+  // single faces.
+  int most_repair_rounds = 3;
+
+  // --- Models made of faces (CAD parts) ---
+  // Normals more than this apart make an edge sharp: a lower angle cuts curved faces into more
+  // charts, a higher one leaves sharp edges uncut.
+  double sharp_edge_degrees = 80;
+  // The share of the area that the sharp edges must split off the parts' largest patches for the
+  // model to be tried cut along them: CAD parts split off far more, statues far less (their sharp
+  // edges are creases and spikes).
+  double faces_share = 0.01;
+  // The cuts tried: their faces are mostly flat, so more cuts leave charts that fill their
+  // rectangles with little stretch; edges sharper than 30 degrees also part a large face from its
+  // fillets, which stretch on a rectangle shared with it.
+  FacesCut faces_cuts[3] = {{80, 1}, {80, 0.5}, {30, 0.5}};
+  // The gentler cuts are tried only while the best atlas has a lower efficiency: they cost time
+  // and do not improve an atlas that already uses the texture well.
+  double gentler_cut_below = 0.7;
+  // A face of such a model is mostly a plane, a cylinder or a fillet, which a free map keeps with
+  // little stretch, so a free map need pay less than free_must_pay; which pays best depends on the
+  // part, so both are laid out.
+  double free_faces_must_pay[2] = {2, 1};
+
+  // --- Mapping a chart (chart_map/) ---
+  // How much better a free map must use its box: the rectangle's further passes and the free
+  // chart's cell, rarely of its shape, eat smaller gains.
+  double free_must_pay = 4;
+  // A chart seen along its normal at this L2 stretch or less is flat (a face of a CAD part).
+  double flat_below = 1.02;
+  // The turns tried within a quarter turn: the best is at most half a step (0.7 degrees) off the
+  // turn of the smallest box, which for a 4 x 1 strip makes its box at most 5% larger.
+  int projection_turns = 64;
+  // The tips of a chart's boundary ears go a quarter of their chord out of the rectangle: a cut
+  // along mesh edges leaves many ears, which a straight side squeezes to slivers that stretch.
+  double ear_bulge = 0.25;
+  // Threads for the charts: at most this many, as many as there are cores.
+  int most_threads = 8;
+
+  // --- Packing (pack/) ---
+  // How far from its own shape a chart may be stretched to fill its cell (width / height ratio);
+  // a cell further off is filled only in part.
+  double most_cell_mismatch = 2;
+  // Below this share of empty texels, filling them gains too little to pay for another layout.
+  double least_empty_share = 0.05;
+  // A chart whose real faces cover this share of its box is seen as its box.
+  double least_guest_fill = 0.9;
+  // The grid of empty texels is the texture's texels up to this many per side, coarser beyond
+  // (a 65536^2 grid would take 4 GiB).
+  int most_grid_side = 2048;
+  // Above this share of the texture in cells raised to the smallest a gutter allows, a note says so.
+  double most_floored_share = 0.1;
+  // Tries to put the guests into empty texels this many times, the guests without room going back
+  // into the tiling each time (which makes every cell smaller, and so the room).
+  int most_guest_rounds = 3;
+
+  // --- Choosing among atlases (charts.cpp) ---
+  // An atlas this much more efficient than one chart per part could be skips laying that out.
+  double clearly_better = 1.25;
+};
+
+constexpr AtlasTuning kTuning{};
+
+}  // namespace lowstretch
