@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <utility>
+#include <string>
 #include <vector>
+
+#include "core/square_corners.h"
 
 namespace lowstretch {
 
@@ -105,6 +108,16 @@ Eigen::MatrixXd square_boundary(const DiskMesh& disk, const std::array<int, 4>& 
   }
   const Eigen::RowVector2d lo = uv.colwise().minCoeff(), hi = uv.colwise().maxCoeff();
   return (uv.rowwise() - lo) / (hi - lo).maxCoeff();
+}
+
+Eigen::MatrixXd rectangle_boundary(const DiskMesh& disk, const RectangleSettings& settings, std::vector<std::string>& notes) {
+  const SquareCorners corners = choose_square_corners(disk, settings.corners_at_turns);
+  if (corners.moved) notes.push_back("square corners moved off the quarter arc lengths so that no boundary triangle collapses");
+  if (corners.collapsed_chords > 0)
+    notes.push_back(std::to_string(corners.collapsed_chords) +
+                    " interior edges join two boundary vertices of one square side whatever the corners: "
+                    "those sides bend outward slightly (at most 0.8% of their length) so that no triangle collapses");
+  return square_boundary(disk, corners.corners, corners.kinks, settings.aspect, corners.ear_tips, settings.ear_bulge);
 }
 
 }  // namespace lowstretch

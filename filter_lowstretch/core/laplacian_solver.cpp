@@ -150,7 +150,7 @@ bool LaplacianSolver::solve_amg(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& x) 
       failed[c] = true;
     }
   };
-  if (!options_.columns_on_two_threads) {  // one hierarchy, u then v: half the setup
+  if (options_.threads < 2) {  // one hierarchy, u then v: half the setup
     try {
       const Clock::time_point start = Clock::now();
       const AmgSolver amg(system, prm);

@@ -5,7 +5,7 @@
 // Two ways to solve it (SolverOptions in solver_options.h):
 // - Amg: algebraic multigrid (amgcl: smoothed aggregation, ILU(0) smoothing) preconditioning
 //   BiCGStab, warm-started from the previous pass's solution, u and v on two threads (or one
-//   after the other with one hierarchy, SolverOptions::columns_on_two_threads). The matrix
+//   after the other with one hierarchy, SolverOptions::threads). The matrix
 //   is an irreducibly diagonally dominant M-matrix for positive weights, the ideal case for AMG,
 //   and it needs no fill, so time and memory grow linearly with the mesh.
 // - Direct: UMFPACK's sparse LU (METIS ordering, AMD for small systems; symbolic analysis once).

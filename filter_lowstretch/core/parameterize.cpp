@@ -29,11 +29,6 @@ Error check_options(const Options& o) {
   if (o.max_passes < 0 || o.max_passes > kMostPasses)
     return {ErrorCode::InvalidOption, 0, "must be from 0 to " + std::to_string(kMostPasses) + ", got " +
                                              std::to_string(o.max_passes), "max_passes"};
-  if (!(o.ear_bulge >= 0 && o.ear_bulge <= 1))
-    return {ErrorCode::InvalidOption, 0, "must be from 0 to 1, got " + number_text(o.ear_bulge), "ear_bulge"};
-  if (!(o.rectangle_aspect == 0 || (o.rectangle_aspect >= 1.0 / 64 && o.rectangle_aspect <= 64)))
-    return {ErrorCode::InvalidOption, 0, "must be 0 (natural) or from 1/64 to 64, got " + number_text(o.rectangle_aspect),
-            "rectangle_aspect"};
   const SolverOptions& s = o.solver;
   if (!(s.tolerance > 0 && s.tolerance < 1 && s.residual_accepted >= s.tolerance && s.max_iterations > 0 &&
         s.amg_minimum_rows >= 1))
@@ -50,21 +45,14 @@ std::pair<int, double> rank(const FaceStretch& s) {
 
 Error boundary_positions(const DiskMesh& disk, const Options& options, Eigen::MatrixXd& boundary_uv,
                          std::vector<std::string>& notes) {
+  if (options.place_boundary) {
+    options.place_boundary(disk, boundary_uv, notes);
+    return {};
+  }
   switch (options.boundary) {
     case BoundaryShape::Circle: boundary_uv = circle_boundary(disk); return {};
     case BoundaryShape::Natural: return natural_boundary(disk, boundary_uv);
-    case BoundaryShape::Square: {
-      const SquareCorners corners = choose_square_corners(disk, options.corners_at_turns);
-      if (corners.moved)
-        notes.push_back("square corners moved off the quarter arc lengths so that no boundary triangle collapses");
-      if (corners.collapsed_chords > 0)
-        notes.push_back(std::to_string(corners.collapsed_chords) +
-                        " interior edges join two boundary vertices of one square side whatever the corners: "
-                        "those sides bend outward slightly (at most 0.8% of their length) so that no triangle collapses");
-      boundary_uv = square_boundary(disk, corners.corners, corners.kinks, options.rectangle_aspect, corners.ear_tips,
-                                    options.ear_bulge);
-      return {};
-    }
+    case BoundaryShape::Square: boundary_uv = rectangle_boundary(disk, RectangleSettings(), notes); return {};
   }
   return {};
 }

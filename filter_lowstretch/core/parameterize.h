@@ -13,17 +13,15 @@
 
 namespace lowstretch {
 
+struct DiskMesh;
+
 constexpr int kMostPasses = 1000;
 
 struct Options {
   BoundaryShape boundary = BoundaryShape::Square;
-  // The square boundary as a rectangle, width / height (1: the square); 0: the rectangle whose
-  // sides are as long as the boundary's arcs between the corners (an atlas's charts fill theirs).
-  double rectangle_aspect = 1;
-  bool corners_at_turns = false;  // square corners where the boundary turns most (square_corners.h)
-  // Square boundary: the tips of boundary ears pushed out to this share of their chord
-  // (boundary_map.h); 0 keeps the square square. The atlas's jagged cuts have many ears.
-  double ear_bulge = 0;
+  // For callers that place the boundary themselves, on a convex polygon (the atlas's rectangles):
+  // called instead of mapping it onto `boundary`, with the rows of disk.boundary to fill.
+  std::function<void(const DiskMesh& disk, Eigen::MatrixXd& boundary_uv, std::vector<std::string>& notes)> place_boundary;
   InitialWeights weights = InitialWeights::Floater;
   double exponent = 1.0;  // eta in (0, 1]: weights are divided by sigma_j^eta each pass
   int max_passes = 10;    // 0: U0 only; 1: U0 and U1; at most kMostPasses

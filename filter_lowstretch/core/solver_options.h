@@ -21,9 +21,9 @@ struct SolverOptions {
   // Smaller systems are solved directly: amgcl would solve them on one level by its own dense LU
   // (its coarse_enough, 3000), slower than UMFPACK.
   int amg_minimum_rows = 3000;
-  // u and v each on a thread with a hierarchy of its own; false: one hierarchy, u then v (half the
-  // setup, for callers that keep both cores busy with other systems, as the atlas does).
-  bool columns_on_two_threads = true;
+  // Cores one solve may use: 2 solves u and v each on a thread with a hierarchy of its own; 1 builds
+  // one hierarchy and solves u then v (half the setup, for callers that keep the cores busy).
+  int threads = 2;
 };
 
 inline const char* to_string(LinearSolver solver) { return solver == LinearSolver::Amg ? "amg" : "direct"; }

@@ -155,7 +155,7 @@ TEST(LaplacianSolver, OutOfRangeSettingsAreRejected) {
 TEST(LaplacianSolver, OneHierarchyForBothColumnsSolvesTheSame) {
   const testmesh::Mesh m = testmesh::tall_cap(60, 120);  // 7,201 vertices: above the direct-solve size
   SolverOptions sequential = with(LinearSolver::Amg);
-  sequential.columns_on_two_threads = false;
+  sequential.threads = 1;
   const PassRun one = run(m, BoundaryShape::Square, sequential);
   const PassRun two = run(m, BoundaryShape::Square, with(LinearSolver::Amg));
   ASSERT_FALSE(one.result.error) << message(one.result.error);
