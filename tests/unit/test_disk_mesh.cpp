@@ -165,23 +165,3 @@ TEST(DiskMesh, AllFacesZeroArea) {
   EXPECT_EQ(e.code, ErrorCode::ZeroAreaMesh);
   EXPECT_EQ(e.count, 8);
 }
-
-TEST(DiskMesh, EveryCodeHasItsOwnMessageAndName) {
-  for (int c = 1; c <= int(ErrorCode::Cancelled); ++c)
-    for (int d = c + 1; d <= int(ErrorCode::Cancelled); ++d) {
-      EXPECT_NE(message({ErrorCode(c), 3, "x"}), message({ErrorCode(d), 3, "x"}));
-      EXPECT_STRNE(code_name(ErrorCode(c)), code_name(ErrorCode(d)));
-    }
-}
-
-TEST(Parameterize, RejectsInvalidOptionsBeforeTouchingTheMesh) {
-  const testmesh::Mesh m = testmesh::grid(3);
-  Options o;
-  o.exponent = 0;
-  EXPECT_EQ(parameterize(m.V, m.F, o).error.code, ErrorCode::InvalidOption);
-  o.exponent = 1.5;
-  EXPECT_EQ(parameterize(m.V, m.F, o).error.code, ErrorCode::InvalidOption);
-  o.exponent = 1;
-  o.max_passes = -1;
-  EXPECT_EQ(parameterize(m.V, m.F, o).error.code, ErrorCode::InvalidOption);
-}

@@ -231,3 +231,15 @@ TEST(Parameterize, BadOptionsAreNamedTheWayTheCallerKnowsThem) {
   const Result closed = parameterize(testmesh::octahedron().V, testmesh::octahedron().F);
   EXPECT_EQ(message(closed.error, flag), message(closed.error));
 }
+
+TEST(Parameterize, RejectsInvalidOptionsBeforeTouchingTheMesh) {
+  const testmesh::Mesh m = testmesh::grid(3);
+  Options o;
+  o.exponent = 0;
+  EXPECT_EQ(parameterize(m.V, m.F, o).error.code, ErrorCode::InvalidOption);
+  o.exponent = 1.5;
+  EXPECT_EQ(parameterize(m.V, m.F, o).error.code, ErrorCode::InvalidOption);
+  o.exponent = 1;
+  o.max_passes = -1;
+  EXPECT_EQ(parameterize(m.V, m.F, o).error.code, ErrorCode::InvalidOption);
+}
