@@ -116,8 +116,12 @@ TEST(AtlasResult, TrianglesThatFloatRoundingCollapsesAreCountedAndNoted) {
   EXPECT_EQ(r.float_collapsed, 2);
   EXPECT_EQ(r.layout.flipped + r.layout.degenerate, 2);  // as stored
   EXPECT_GE(r.subtexel_triangles, 1);
-  EXPECT_TRUE(std::any_of(r.notes.begin(), r.notes.end(),
-                          [](const std::string& n) { return n.find("rounded to float") != std::string::npos; }));
+  // Apart by 1e-3, nothing collapses, and a note fewer.
+  const testmesh::Mesh apart = square_with_close_pair(1e-3);
+  const ChartsResult control = parameterize_charts(apart.V, apart.F, disk_only);
+  ASSERT_FALSE(control.error) << message(control.error);
+  EXPECT_EQ(control.float_collapsed, 0);
+  EXPECT_GT(r.notes.size(), control.notes.size());
   // By default that disk gets charts instead: the tiny triangles apart, each in a cell of its own
   // that float can hold, and every triangle positive as stored.
   const ChartsResult atlas = parameterize_charts(V, F, ChartOptions());

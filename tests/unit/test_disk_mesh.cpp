@@ -104,7 +104,6 @@ TEST(DiskMesh, TwoComponents) {
   const Error e = check(testmesh::two_grids(2));
   EXPECT_EQ(e.code, ErrorCode::SeveralComponents);
   EXPECT_EQ(e.count, 2);
-  EXPECT_NE(message(e).find("2 connected components"), std::string::npos);
 }
 
 TEST(DiskMesh, TriangleSoupIsNamedUnwelded) {
@@ -113,8 +112,6 @@ TEST(DiskMesh, TriangleSoupIsNamedUnwelded) {
   EXPECT_EQ(e.code, ErrorCode::UnweldedVertices);
   // Every vertex but the grid's two corners with a single face sits on another.
   EXPECT_EQ(e.count, 52);
-  EXPECT_NE(message(e).find("not welded"), std::string::npos) << message(e);
-  EXPECT_NE(message(e).find("Remove Duplicate Vertices"), std::string::npos) << message(e);
   EXPECT_FALSE(charts_would_help(e.code));
 }
 
@@ -139,7 +136,7 @@ TEST(DiskMesh, NonManifoldVertexOfTwoFansSharingAVertex) {
 TEST(DiskMesh, Closed) {
   const Error e = check(testmesh::octahedron());
   EXPECT_EQ(e.code, ErrorCode::Closed);
-  EXPECT_NE(message(e).find("closed"), std::string::npos);
+  EXPECT_TRUE(charts_would_help(e.code));
 }
 
 TEST(DiskMesh, HoleMakesTwoBoundaryLoops) {
@@ -147,8 +144,6 @@ TEST(DiskMesh, HoleMakesTwoBoundaryLoops) {
   const Error e = check(m);
   EXPECT_EQ(e.code, ErrorCode::SeveralBoundaryLoops);
   EXPECT_EQ(e.count, 2);
-  EXPECT_EQ(message(e), "the mesh has 2 boundary loops; a disk has exactly 1: close the holes or cut the mesh, or "
-            "parameterize it as charts");
   EXPECT_TRUE(charts_would_help(e.code));
 }
 
