@@ -249,4 +249,24 @@ Mesh plate_with_hole(int n, double thickness) {
   return from_lists(v, f);
 }
 
+Mesh sphere_with_bump() {
+  Mesh m = sphere(24, 32);
+  for (Eigen::Index v = 0; v < m.V.rows(); ++v) {
+    const double x = m.V(v, 0);
+    if (x > 0.5) m.V(v, 0) += 6 * (x - 0.5);  // pull one side out into an arm
+  }
+  return m;
+}
+
+Mesh ball_with_arms() {
+  Mesh m = sphere(64, 96);
+  for (Eigen::Index v = 0; v < m.V.rows(); ++v)
+    for (int axis : {0, 1, 2}) {
+      const double x = m.V(v, axis);
+      if (x > 0.7) m.V(v, axis) += 30 * (x - 0.7);
+      if (x < -0.7) m.V(v, axis) += 20 * (x + 0.7);
+    }
+  return m;
+}
+
 }  // namespace testmesh

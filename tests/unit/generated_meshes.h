@@ -49,5 +49,10 @@ Mesh cube(int n);
 // half its side (a hole of a quarter of its area), the first faces in grid order; then the bottom side, then one quad of wall per
 // boundary edge. A flat face with a hole, as CAD parts have.
 Mesh plate_with_hole(int n, double thickness);
+// sphere(24, 32) with the side x > 0.5 pulled out into a long arm: one chart of it stretches a lot.
+Mesh sphere_with_bump();
+// A closed ball of 12,000 faces (sphere(64, 96)) with six arms: far above any bound, so that its
+// largest parts are cut before they are mapped (ChartOptions::most_cuts_ahead).
+Mesh ball_with_arms();
 
 }  // namespace testmesh

@@ -220,14 +220,27 @@ TEST(Parameterize, BadOptionsAreNamedTheWayTheCallerKnowsThem) {
   Result r = parameterize(m.V, m.F, o);
   EXPECT_EQ(r.error.code, ErrorCode::InvalidOption);
   EXPECT_EQ(r.error.option, "exponent");
-  EXPECT_EQ(message(r.error), "invalid option: exponent must be in (0, 1], got 2");
-  EXPECT_EQ(message(r.error, flag), "--exponent must be in (0, 1], got 2");
+  EXPECT_NE(message(r.error).find("exponent"), std::string::npos) << message(r.error);
+  EXPECT_EQ(message(r.error).find("--exponent"), std::string::npos) << message(r.error);
+  EXPECT_NE(message(r.error, flag).find("--exponent"), std::string::npos) << message(r.error, flag);
   o = Options();
   o.max_passes = kMostPasses + 1;
   r = parameterize(m.V, m.F, o);
   EXPECT_EQ(r.error.option, "max_passes");
-  EXPECT_EQ(message(r.error, flag), "--max_passes must be from 0 to 1000, got 1001");
+  EXPECT_NE(message(r.error, flag).find("--max_passes"), std::string::npos) << message(r.error, flag);
   // Other errors keep their own message.
   const Result closed = parameterize(testmesh::octahedron().V, testmesh::octahedron().F);
   EXPECT_EQ(message(closed.error, flag), message(closed.error));
+}
+
+TEST(Parameterize, RejectsInvalidOptionsBeforeTouchingTheMesh) {
+  const testmesh::Mesh m = testmesh::grid(3);
+  Options o;
+  o.exponent = 0;
+  EXPECT_EQ(parameterize(m.V, m.F, o).error.code, ErrorCode::InvalidOption);
+  o.exponent = 1.5;
+  EXPECT_EQ(parameterize(m.V, m.F, o).error.code, ErrorCode::InvalidOption);
+  o.exponent = 1;
+  o.max_passes = -1;
+  EXPECT_EQ(parameterize(m.V, m.F, o).error.code, ErrorCode::InvalidOption);
 }

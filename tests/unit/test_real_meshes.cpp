@@ -2,11 +2,14 @@
 #include <gtest/gtest.h>
 
 #include <dirent.h>
+#include <cmath>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "atlas/charts.h"
+#include "atlas/cut/sharp_patches.h"
+#include "core/half_edges.h"
 #include "core/parameterize.h"
 #include "layout_checks.h"
 #include "tool/mesh_io.h"
@@ -149,7 +152,24 @@ TEST(RealMeshes, CgalCadPartIsAlsoCutAlongItsGentlerEdges) {
   ASSERT_FALSE(r.error) << r.error.detail;
   expect_valid_layout(F, r);
   EXPECT_GT(texture_efficiency(r), 0.6);
-  bool noted = false;
-  for (const std::string& note : r.notes) noted = noted || note.find("more than 30 degrees apart") != std::string::npos;
-  EXPECT_TRUE(noted) << "a note says which edges cut the part";
+  // Cut along the edges sharper than 30 degrees: each edge between two of the patches those edges
+  // bound (more than those at 80 degrees) lies between two charts.
+  const std::vector<int> twin = opposite_half_edges(F);
+  std::vector<int> patch_at_30(size_t(F.rows())), patch_at_80(size_t(F.rows()));
+  for (const auto& angle_patch : {std::make_pair(30.0, &patch_at_30), std::make_pair(80.0, &patch_at_80)}) {
+    const std::vector<std::vector<int>> patches = patches_between_sharp_edges(V, F, angle_patch.first);
+    for (size_t p = 0; p < patches.size(); ++p)
+      for (const int f : patches[p]) (*angle_patch.second)[size_t(f)] = int(p);
+  }
+  int at_30 = 0, at_30_only = 0, between_charts = 0;
+  for (size_t h = 0; h < twin.size(); ++h) {
+    if (twin[h] <= int(h)) continue;
+    const size_t f = h / 3, g = size_t(twin[h]) / 3;
+    if (patch_at_30[f] == patch_at_30[g]) continue;
+    ++at_30;
+    at_30_only += patch_at_80[f] == patch_at_80[g];
+    between_charts += r.face_chart[f] != r.face_chart[g];
+  }
+  EXPECT_GT(at_30_only, 0);
+  EXPECT_EQ(between_charts, at_30);
 }
