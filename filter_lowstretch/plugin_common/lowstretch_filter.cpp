@@ -38,7 +38,8 @@ Error invalid_choice(const OptionRow& row, int value) {
   return {ErrorCode::InvalidOption, 0, std::string(row.label) + " must be " + choices + ", got " + std::to_string(value)};
 }
 
-// "Low-stretch parameterization: 100 vertices, 180 faces; Boundary shape Square, Exponent 1, ..."
+// "Low-stretch parameterization: 100 vertices, 180 faces; boundary square, exponent 1, ..." (the
+// options by the names scripts and the tool's JSON use)
 std::string header_line(int vertices, int faces, const ChartOptions& options) {
   std::string line = format("%s: %d vertices, %d faces", kFilterName, vertices, faces);
   const char* separator = "; ";
@@ -47,11 +48,11 @@ std::string header_line(int vertices, int faces, const ChartOptions& options) {
     const double value = row.get(options);
     std::string text;
     switch (row.kind) {
-      case OptionKind::Choice: text = row.entries.at(size_t(value)); break;
+      case OptionKind::Choice: text = row.words.at(size_t(value)); break;
       case OptionKind::Switch: text = value != 0 ? "on" : "off"; break;
       default: text = format("%g", value);
     }
-    line += separator + std::string(row.label) + " " + text;
+    line += separator + std::string(row.name) + " " + text;
     separator = ", ";
   }
   return line;
