@@ -141,6 +141,17 @@ Result failed(Error error) {
   return result;
 }
 
+// The initial weights (ring_weights.h), with a note where a degenerate one-ring got uniform ones.
+std::vector<double> noted_initial_weights(const DiskMesh& disk, InitialWeights kind, std::vector<std::string>& notes) {
+  int fallbacks = 0;
+  std::vector<double> weights = initial_weights(disk, kind, fallbacks);
+  if (fallbacks > 0)
+    notes.push_back(std::to_string(fallbacks) +
+                    " interior vertices have a degenerate one-ring (zero-length edges or zero-area "
+                    "triangles): uniform weights used there");
+  return weights;
+}
+
 }  // namespace
 
 Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Options& options) {
@@ -156,12 +167,7 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
   Eigen::MatrixXd boundary_uv;
   if (Error e = boundary_positions(disk, options, boundary_uv, result.notes)) return failed(e);
 
-  int fallbacks = 0;
-  std::vector<double> weights = initial_weights(disk, options.weights, fallbacks);
-  if (fallbacks > 0)
-    result.notes.push_back(std::to_string(fallbacks) +
-                           " interior vertices have a degenerate one-ring (zero-length edges or zero-area "
-                           "triangles): uniform weights used there");
+  std::vector<double> weights = noted_initial_weights(disk, options.weights, result.notes);
 
   LaplacianSolver solver(disk, options.solver);
   const SurfaceReference reference = surface_reference(disk.V, disk.F, disk.edges);

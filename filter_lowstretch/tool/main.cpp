@@ -159,6 +159,24 @@ void place_texture(const std::string& output) {
   if (in) std::ofstream(target, std::ios::binary) << in.rdbuf();
 }
 
+// The texture coordinates drawn as SVG, coloured by stretch, three rows per face so that seams
+// show as they are.
+bool draw_svg(const Arguments& args, const Eigen::MatrixXi& F, const ChartsResult& result, std::string& error) {
+  std::ostringstream title;
+  title << args.input.substr(args.input.find_last_of('/') + 1) << ": " << to_string(args.charts.disk.boundary);
+  if (result.input_is_disk) title << ", pass " << result.chosen_pass;
+  else title << ", " << result.charts.size() << " charts";
+  title << ", L2 stretch " << result.layout.l2_stretch;
+  Eigen::MatrixXd corner_uv(3 * F.rows(), 2);
+  Eigen::MatrixXi corner_faces(F.rows(), 3);
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      corner_uv.row(3 * f + k) = result.corner_uv.block(f, 2 * k, 1, 2);
+      corner_faces(f, k) = int(3 * f + k);
+    }
+  return write_uv_svg(args.svg, corner_uv, corner_faces, result.face_stretch, title.str(), error);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -207,24 +225,9 @@ int main(int argc, char** argv) {
     }
     place_texture(args.output);
   }
-  if (!args.svg.empty()) {
-    std::ostringstream title;
-    title << args.input.substr(args.input.find_last_of('/') + 1) << ": " << to_string(args.charts.disk.boundary);
-    if (result.input_is_disk) title << ", pass " << result.chosen_pass;
-    else title << ", " << result.charts.size() << " charts";
-    title << ", L2 stretch " << result.layout.l2_stretch;
-    // Three UV rows per face, so that seams show as they are.
-    Eigen::MatrixXd corner_uv(3 * F.rows(), 2);
-    Eigen::MatrixXi corner_faces(F.rows(), 3);
-    for (Eigen::Index f = 0; f < F.rows(); ++f)
-      for (int k = 0; k < 3; ++k) {
-        corner_uv.row(3 * f + k) = result.corner_uv.block(f, 2 * k, 1, 2);
-        corner_faces(f, k) = int(3 * f + k);
-      }
-    if (!write_uv_svg(args.svg, corner_uv, corner_faces, result.face_stretch, title.str(), error)) {
-      std::cerr << "lowstretch: " << error << "\n";
-      return kCannotWrite;
-    }
+  if (!args.svg.empty() && !draw_svg(args, F, result, error)) {
+    std::cerr << "lowstretch: " << error << "\n";
+    return kCannotWrite;
   }
   return kDone;
 }

@@ -39,13 +39,11 @@ bool to_double(const std::string& token, double& value) {
   return *end == '\0';
 }
 
-}  // namespace
-
-bool read_off(const std::string& path, long long file_size, ToolMesh& mesh, std::string& error) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) { error = "cannot open the file"; return false; }
+// The OFF header: "[ST][C][N]OFF", then the vertex and face counts, on that line or the next;
+// the counts are checked against the file's size. `number` is the line read last.
+bool read_off_header(std::istream& in, long long file_size, long long& number, long long& vertices, long long& faces,
+                     std::string& error) {
   std::string line, token;
-  long long number = 0;
   if (!next_line(in, line, number)) { error = "not an OFF file (no OFF header)"; return false; }
   std::istringstream words(line);
   words >> token;
@@ -64,12 +62,21 @@ bool read_off(const std::string& path, long long file_size, ToolMesh& mesh, std:
     std::istringstream more(line);
     while (more >> token) counts.push_back(token);
   }
-  long long vertices = 0, faces = 0;
   if (counts.size() < 2 || !to_integer(counts[0], vertices) || !to_integer(counts[1], faces)) {
     error = "line " + std::to_string(number) + ": the OFF header needs vertex and face counts";
     return false;
   }
-  if (!counts_fit(vertices, faces, file_size, error)) return false;
+  return counts_fit(vertices, faces, file_size, error);
+}
+
+}  // namespace
+
+bool read_off(const std::string& path, long long file_size, ToolMesh& mesh, std::string& error) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) { error = "cannot open the file"; return false; }
+  std::string line, token;
+  long long number = 0, vertices = 0, faces = 0;
+  if (!read_off_header(in, file_size, number, vertices, faces, error)) return false;
 
   std::vector<vcg::Point3d> points(static_cast<size_t>(vertices));
   for (long long i = 0; i < vertices; ++i) {
