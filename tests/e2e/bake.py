@@ -12,6 +12,8 @@ then bake the colours into a texture with MeshLab's own filter, and check the te
       stretches more than Max chart stretch, instead of the disk's single chart.
   bake.py colour --mesh OFF --output PLY
       only gives the mesh the colour pattern (a stand-in for a scan's colours; the README uses it).
+meshlab2020 and pymeshlab print the table, then check ours (exit code 1 when a check fails); the
+ctest tests run the same through pytest (test_bake.py).
 
 For every method the baked texture is sampled at four points of every face (its centroid and
 halfway from it to each corner), at the texel that the wedge texcoords address, and compared
@@ -32,7 +34,6 @@ sys.path.insert(0, HERE)
 import e2e  # noqa: E402
 import generate  # noqa: E402
 import meshio  # noqa: E402
-from script_checks import Checks  # noqa: E402
 from stretch_formula import map_stretch  # noqa: E402
 
 SIZE = 1024                 # texture side, as the .mlx and the filter's Texture size say
@@ -206,7 +207,7 @@ def run_pymeshlab(args, method, coloured):
     """One method in its own pymeshlab process (its log is its own); returns (mesh, texture, log)."""
     sys.path.insert(0, os.path.join(HERE, "..", "meshlab2025"))
     from test_pymeshlab import venv_python
-    python = venv_python(args.venv)
+    python = venv_python(args.venv, getattr(args, "venv_python", None) or sys.executable)
     work = os.path.join(args.work, method.replace(" ", "_"))
     os.makedirs(work, exist_ok=True)
     proc = subprocess.run([python, os.path.abspath(__file__), "pymeshlab", "--inside", "--method", method,
@@ -218,26 +219,48 @@ def run_pymeshlab(args, method, coloured):
     return os.path.join(work, "baked.ply"), os.path.join(work, "texture.png"), proc.stdout + proc.stderr
 
 
-def report_and_check(check, args, results, logs):
-    print(f"| method | faces | coverage | L2 stretch | flipped | colour error (RMS, 0-255) | out-of-range warnings |")
+def print_table(name, args, results, logs):
+    print(f"mesh {name}, texture {SIZE} x {SIZE}, MeshLab {'2020.09' if args.mode == 'meshlab2020' else '2025.7 (pymeshlab)'}"
+          f"{', ours as an atlas' if args.atlas else ''}")
+    print("| method | faces | coverage | L2 stretch | flipped | colour error (RMS, 0-255) | out-of-range warnings |")
     print("|---|---|---|---|---|---|---|")
     for method, r in results.items():
         print(f"| {method} | {r['faces']} | {r['coverage']:.3f} | {r['l2']:.3f} | {r['flipped']} | "
               f"{r['colour_error']:.2f} | {len(OUT_OF_RANGE.findall(logs[method]))} |")
-    ours, voronoi = results.get("low-stretch"), results.get("Voronoi atlas")
-    if not check(ours is not None and voronoi is not None, "our map and the Voronoi atlas were baked"):
-        return
-    check(len(OUT_OF_RANGE.findall(logs["low-stretch"])) == 0, "baking our map writes no pixel out of range")
+
+
+def bake(args):
+    """The three methods baked in args.work (args.mode: meshlab2020 or pymeshlab), measured, the
+    table printed; returns (results, logs, the methods whose mesh or texture is missing)."""
+    os.makedirs(args.work, exist_ok=True)
+    coloured, name = coloured_input(args)
+    results, logs, missing = {}, {}, []
+    run = run_2020 if args.mode == "meshlab2020" else run_pymeshlab
+    for method in PYMESHLAB_FILTERS:
+        mesh, texture, logs[method] = run(args, method, coloured)
+        if os.path.isfile(mesh) and os.path.isfile(texture):
+            results[method] = measure(mesh, texture)
+        else:
+            missing.append(method)
+    print_table(name, args, results, logs)
+    return results, logs, missing
+
+
+def check_bake(results, logs, missing):
+    """The checks of ours, as assertions (test_bake.py runs them under pytest)."""
+    assert not missing, f"baked mesh and texture written by every method (missing: {', '.join(missing)})"
+    ours, voronoi = results["low-stretch"], results["Voronoi atlas"]
+    assert len(OUT_OF_RANGE.findall(logs["low-stretch"])) == 0, "baking our map writes no pixel out of range"
     low, high = ours["uv_range"]
-    check(low > 0 and high < 1, f"our texcoords are strictly inside (0,1): [{low:.6g}, {high:.6g}]")
-    check(ours["flipped"] == 0, f"no flipped or zero-area UV triangle in our map ({ours['flipped']})")
+    assert low > 0 and high < 1, f"our texcoords are strictly inside (0,1): [{low:.6g}, {high:.6g}]"
+    assert ours["flipped"] == 0, f"no flipped or zero-area UV triangle in our map ({ours['flipped']})"
     # The measure sees a wrong texture: read upside down, ours is far off.
     upside_down = measure(ours["mesh"], ours["texture"], flip_v=True)["colour_error"]
-    check(upside_down > 5 * ours["colour_error"],
-          f"the colour error sees a wrong texture: {upside_down:.2f} when read upside down")
-    check(ours["colour_error"] <= ERROR_BOUND, f"colour error of our bake {ours['colour_error']:.2f} <= {ERROR_BOUND}")
-    check(ours["colour_error"] <= voronoi["colour_error"],
-          f"colour error of our bake {ours['colour_error']:.2f} <= the Voronoi atlas's {voronoi['colour_error']:.2f}")
+    assert upside_down > 5 * ours["colour_error"], \
+        f"the colour error sees a wrong texture: {upside_down:.2f} when read upside down"
+    assert ours["colour_error"] <= ERROR_BOUND, f"colour error of our bake {ours['colour_error']:.2f} <= {ERROR_BOUND}"
+    assert ours["colour_error"] <= voronoi["colour_error"], (
+        f"colour error of our bake {ours['colour_error']:.2f} <= the Voronoi atlas's {voronoi['colour_error']:.2f}")
 
 
 def main():
@@ -271,20 +294,13 @@ def main():
         if getattr(args, name):
             setattr(args, name, os.path.abspath(getattr(args, name)))
 
-    os.makedirs(args.work, exist_ok=True)
-    coloured, name = coloured_input(args)
-    check = Checks()
-    results, logs = {}, {}
-    run = run_2020 if args.mode == "meshlab2020" else run_pymeshlab
-    for method in PYMESHLAB_FILTERS:
-        mesh, texture, logs[method] = run(args, method, coloured)
-        if check(os.path.isfile(mesh) and os.path.isfile(texture), f"{method}: baked mesh and texture written"):
-            results[method] = measure(mesh, texture)
-    print(f"mesh {name}, texture {SIZE} x {SIZE}, MeshLab {'2020.09' if args.mode == 'meshlab2020' else '2025.7 (pymeshlab)'}"
-          f"{', ours as an atlas' if args.atlas else ''}")
-    report_and_check(check, args, results, logs)
-    print(f"{len(check.failed)} check(s) failed" if check.failed else "all checks passed")
-    return 1 if check.failed else 0
+    try:
+        check_bake(*bake(args))
+    except AssertionError as failure:
+        print(f"FAILED: {failure}")
+        return 1
+    print("all checks passed")
+    return 0
 
 
 if __name__ == "__main__":

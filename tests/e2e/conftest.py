@@ -1,4 +1,6 @@
-"""pytest options of the MeshLab 2020.09 end-to-end tests (test_e2e.py); see pytest_options.py."""
+"""pytest options of the tests of this folder: the MeshLab 2020.09 end-to-end tests (test_e2e.py),
+the tool's files and scans (test_tool_files.py, test_scan_atlas.py) and the bake (test_bake.py);
+see pytest_options.py."""
 import os
 import sys
 
@@ -6,7 +8,7 @@ sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import pytest  # noqa: E402
 
-pytest.register_assert_rewrite("e2e")
+pytest.register_assert_rewrite("e2e", "bake")
 import pytest_options  # noqa: E402
 
 
@@ -16,3 +18,9 @@ def pytest_addoption(parser):
     pytest_options.add(parser, "--resources", help="the repository's resources/ folder (the .mlx scripts)")
     pytest_options.add(parser, "--runner", help="lowstretch_plugin_runner executable")
     pytest_options.add(parser, "--plugin", help="the MeshLab 2020.09 libfilter_lowstretch.so under test")
+    pytest_options.add(parser, "--scan-python", help="test_scan_atlas.py TestReconstructions: a Python with numpy, "
+                       "pymeshlab and scikit-image (~/.cache/filter_lowstretch/scan-venv/bin/python)")
+    # test_bake.py's pymeshlab tests (the same options as tests/meshlab2025/conftest.py's)
+    pytest_options.add(parser, "--pymeshlab-plugin", help="the pymeshlab (double) build of libfilter_lowstretch.so")
+    pytest_options.add(parser, "--venv", help="virtual environment folder for pymeshlab (created if missing)")
+    pytest_options.add(parser, "--venv-python", default=sys.executable, help="the Python that creates --venv")

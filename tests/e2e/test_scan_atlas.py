@@ -1,0 +1,118 @@
+"""Scans get a valid atlas with the tool's default options. TestDefects: tests/bench/make_defects.py
+puts fins (non-manifold edges), zero-area slivers, duplicate vertices, dust, holes and collapsed
+edges into a closed mesh; TestReconstructions: tests/bench/make_reconstructions.py makes MeshLab's
+ball pivoting, VCG and screened Poisson reconstructions and marching cubes on a quantized signed
+distance of it (run by --scan-python, a Python with numpy, pymeshlab and scikit-image). For each
+file (test_atlas[NAME]) `lowstretch FILE -o out.obj --json` must exit 0, write every input face
+with texture coordinates inside the gutter, and leave no flipped UV triangle and no zero-area one
+on a face with 3D area (a face of zero 3D area may have zero UV area, never a negative one), as
+read back from the OBJ; the triangle soup of make_defects.py is refused with the weld message
+(TestDefects::test_soup_refused). The closed mesh is CGAL's armadillo (--cgal-meshes).
+
+  python3 -B -m pytest -p no:cacheprovider tests/e2e/test_scan_atlas.py::TestDefects --tool build/lowstretch
+  python3 -B -m pytest -p no:cacheprovider tests/e2e/test_scan_atlas.py::TestReconstructions \
+      --tool build/lowstretch --scan-python ~/.cache/filter_lowstretch/scan-venv/bin/python
+"""
+import json
+import os
+import subprocess
+import sys
+
+import pytest
+
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import meshio  # noqa: E402
+import pytest_options  # noqa: E402
+
+GUTTER = 2 / 1024  # the default gutter over the default texture size
+ZERO_AREA = 1e-12  # of the layout's square, as tests/bench/atlas_table.py counts zero-area triangles
+CLOSED_MESH = "armadillo.off"  # in --cgal-meshes
+DEFECTS = ["fins", "slivers", "duplicates", "dust", "collapsed", "dropouts", "holes200", "all"]
+RECONSTRUCTIONS = ["ball_pivoting", "vcg", "poisson", "sdf_mc"]
+
+
+def area3(p, q, r):
+    u = [q[k] - p[k] for k in range(3)]
+    v = [r[k] - p[k] for k in range(3)]
+    c = (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
+    return 0.5 * (c[0] ** 2 + c[1] ** 2 + c[2] ** 2) ** 0.5
+
+
+def area_uv(a, b, c):
+    return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]))
+
+
+def make_scans(python, script, mesh, work):
+    """The scans of mesh, written into work by tests/bench/SCRIPT run by python."""
+    made = subprocess.run([python, os.path.join(HERE, "..", "bench", script), mesh, str(work)],
+                          capture_output=True, text=True)
+    assert made.returncode == 0, f"{script} writes the meshes ({made.stderr.strip()[-300:]})"
+    return work
+
+
+@pytest.fixture(scope="session")
+def tool(request):
+    return pytest_options.required(request.config, "tool")
+
+
+@pytest.fixture(scope="session")
+def closed_mesh(request):
+    return os.path.join(pytest_options.required(request.config, "cgal_meshes"), CLOSED_MESH)
+
+
+def check_atlas(tool, path, work):
+    name = os.path.basename(path)
+    out = os.path.join(work, name[:-4] + ".obj")
+    proc = subprocess.run([tool, path, "-o", out, "--json"], capture_output=True, text=True, timeout=900)
+    assert proc.returncode == 0, f"{name}: exit 0 ({proc.returncode}: {proc.stderr.strip()[:200]})"
+    layout = json.loads(proc.stdout)["layout"]
+    assert layout["flipped"] == 0 and layout["degenerate"] == 0, \
+        f"{name}: the JSON counts no flipped or zero-area triangle ({layout['flipped']}, {layout['degenerate']})"
+    in_vertices, in_faces = meshio.read_off(path)
+    _, faces, corners = meshio.read_obj_with_texcoords(out)
+    corner_uv = [corners[3 * f:3 * f + 3] for f in range(len(faces))]
+    assert [list(f) for f in faces] == [list(f) for f in in_faces], \
+        f"{name}: every input face written, as it was ({len(faces)} of {len(in_faces)})"
+    assert all(c is not None and GUTTER - 1e-7 <= t <= 1 - GUTTER + 1e-7 for c in corners for t in (c or (0, 0))), \
+        f"{name}: every texture coordinate inside the gutter"
+    flipped = zero = flat_negative = 0
+    for f, uv in zip(faces, corner_uv):
+        a = area_uv(*uv)
+        if area3(*(in_vertices[v] for v in f)) > 0:  # in the input's own coordinates
+            flipped += a < 0
+            zero += abs(a) <= ZERO_AREA
+        else:
+            flat_negative += a < 0
+    assert flipped == 0 and zero == 0 and flat_negative == 0, (
+        f"{name}: no flipped UV triangle ({flipped}), no zero-area one on a face with area ({zero}), no flat face "
+        f"flipped ({flat_negative})")
+
+
+class TestDefects:
+    @pytest.fixture(scope="class")
+    def scans(self, tmp_path_factory, closed_mesh):
+        return make_scans(sys.executable, "make_defects.py", closed_mesh, tmp_path_factory.mktemp("defects"))
+
+    @pytest.mark.parametrize("name", DEFECTS)
+    def test_atlas(self, tool, scans, name):
+        check_atlas(tool, str(scans / (name + ".off")), str(scans))
+
+    def test_soup_refused(self, tool, scans):
+        out = scans / "soup.obj"
+        soup = subprocess.run([tool, str(scans / "soup.off"), "-o", str(out)], capture_output=True, text=True,
+                              timeout=900)
+        assert soup.returncode == 3 and "not welded" in soup.stderr and not out.exists(), \
+            f"soup.off: refused with the weld message, nothing written ({soup.returncode}: {soup.stderr.strip()[:120]})"
+
+
+class TestReconstructions:
+    @pytest.fixture(scope="class")
+    def scans(self, request, tmp_path_factory, closed_mesh):
+        python = pytest_options.required(request.config, "scan_python")
+        return make_scans(python, "make_reconstructions.py", closed_mesh, tmp_path_factory.mktemp("reconstructions"))
+
+    @pytest.mark.parametrize("name", RECONSTRUCTIONS)
+    def test_atlas(self, tool, scans, name):
+        check_atlas(tool, str(scans / (name + ".off")), str(scans))
