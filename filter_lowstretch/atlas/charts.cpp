@@ -29,23 +29,32 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// Which vertices the faces use.
+std::vector<char> used_vertices(Eigen::Index vertices, const Eigen::MatrixXi& F) {
+  std::vector<char> used(static_cast<size_t>(vertices), 0);
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) used[size_t(F(f, k))] = 1;
+  return used;
+}
+
+// The rows of V that faces use.
+Eigen::MatrixXd used_rows(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
+  const std::vector<char> used = used_vertices(V.rows(), F);
+  Eigen::MatrixXd rows(std::count(used.begin(), used.end(), 1), V.cols());
+  for (Eigen::Index v = 0, r = 0; v < V.rows(); ++v)
+    if (used[size_t(v)]) rows.row(r++) = V.row(v);
+  return rows;
+}
+
 // The used vertices moved into make_disk_mesh's unit box, so that huge coordinates do not
 // overflow lengths and areas; `unit` converts lengths back to the input's units.
 Eigen::MatrixXd unit_box_of_used(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, double& unit) {
-  std::vector<char> used(static_cast<size_t>(V.rows()), 0);
-  std::vector<int> rows;
-  for (Eigen::Index f = 0; f < F.rows(); ++f)
-    for (int k = 0; k < 3; ++k)
-      if (!used[size_t(F(f, k))]) {
-        used[size_t(F(f, k))] = 1;
-        rows.push_back(F(f, k));
-      }
-  Eigen::MatrixXd points(Eigen::Index(rows.size()), 3);
-  for (size_t i = 0; i < rows.size(); ++i) points.row(Eigen::Index(i)) = V.row(rows[i]);
-  const UnitBox box = unit_box(points);
+  const UnitBox box = unit_box(used_rows(V, F));
   unit = box.unit();
+  const std::vector<char> used = used_vertices(V.rows(), F);
   Eigen::MatrixXd scaled = Eigen::MatrixXd::Zero(V.rows(), 3);
-  for (int r : rows) scaled.row(r) = box.map(V.row(r));
+  for (Eigen::Index v = 0; v < V.rows(); ++v)
+    if (used[size_t(v)]) scaled.row(v) = box.map(V.row(v));
   return scaled;
 }
 
@@ -305,16 +314,6 @@ std::string count_text(int count, const char* one, const char* many) {
   return std::to_string(count) + " " + (count == 1 ? one : many);
 }
 
-// The rows of V that faces use.
-Eigen::MatrixXd used_rows(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
-  std::vector<char> used(size_t(V.rows()), 0);
-  for (Eigen::Index f = 0; f < F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) used[size_t(F(f, k))] = 1;
-  Eigen::MatrixXd rows(std::count(used.begin(), used.end(), 1), V.cols());
-  for (Eigen::Index v = 0, r = 0; v < V.rows(); ++v)
-    if (used[size_t(v)]) rows.row(r++) = V.row(v);
-  return rows;
-}
 
 // A triangle soup (each face with vertices of its own, as STL stores them): half or more of the
 // used vertices sit on another. Welding it, not cutting it, is the way out (as parameterize says).

@@ -63,29 +63,21 @@ Error compact_vertices(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, DiskM
 // Pairs each half-edge with the opposite one (twin, -1 on the boundary) and lists every
 // undirected edge once, counting the edges that are not manifold or not consistently oriented.
 Error pair_half_edges(const Eigen::MatrixXi& F, std::vector<int>& twin, DiskMesh& disk) {
-  const int nh = int(3 * F.rows());
   const std::vector<std::pair<uint64_t, int>> keyed = half_edges_by_edge(F);
-  twin.assign(size_t(nh), -1);
+  EdgePairing pairing = pair_manifold_half_edges(F, keyed);
+  if (pairing.non_manifold) return {ErrorCode::NonManifoldEdges, pairing.non_manifold, ""};
+  if (pairing.misoriented) return {ErrorCode::InconsistentOrientation, pairing.misoriented, ""};
+  twin = std::move(pairing.twin);
   std::vector<std::pair<int, int>> edges;
   disk.edge_on_boundary.clear();
-  long long non_manifold = 0, misoriented = 0;
   for (size_t s = 0; s < keyed.size();) {
     size_t e = s;
     while (e < keyed.size() && keyed[e].first == keyed[s].first) ++e;
     const int h0 = keyed[s].second;
     edges.push_back({half_edge_tail(F, h0), half_edge_head(F, h0)});
     disk.edge_on_boundary.push_back(e - s == 1);
-    if (e - s > 2) ++non_manifold;
-    else if (e - s == 2) {
-      const int h1 = keyed[s + 1].second;
-      if (half_edge_tail(F, h0) == half_edge_tail(F, h1)) ++misoriented;  // both run the same way
-      twin[size_t(h0)] = h1;
-      twin[size_t(h1)] = h0;
-    }
     s = e;
   }
-  if (non_manifold) return {ErrorCode::NonManifoldEdges, non_manifold, ""};
-  if (misoriented) return {ErrorCode::InconsistentOrientation, misoriented, ""};
   disk.edges.resize(Eigen::Index(edges.size()), 2);
   for (size_t e = 0; e < edges.size(); ++e) disk.edges.row(Eigen::Index(e)) << edges[e].first, edges[e].second;
   return {};

@@ -45,6 +45,26 @@ std::vector<int> opposite_half_edges(const Eigen::MatrixXi& F) {
   return twin;
 }
 
+EdgePairing pair_manifold_half_edges(const Eigen::MatrixXi& F, const std::vector<std::pair<uint64_t, int>>& keyed) {
+  EdgePairing pairing;
+  pairing.twin.assign(size_t(3 * F.rows()), -1);
+  for (size_t s = 0; s < keyed.size();) {
+    size_t e = s;
+    while (e < keyed.size() && keyed[e].first == keyed[s].first) ++e;
+    if (e - s > 2) ++pairing.non_manifold;
+    else if (e - s == 2) {
+      const int h0 = keyed[s].second, h1 = keyed[s + 1].second;
+      if (half_edge_tail(F, h0) == half_edge_tail(F, h1)) ++pairing.misoriented;  // both run the same way
+      else {
+        pairing.twin[size_t(h0)] = h1;
+        pairing.twin[size_t(h1)] = h0;
+      }
+    }
+    s = e;
+  }
+  return pairing;
+}
+
 std::vector<int> corner_fans(const std::vector<int>& twin) {
   const int nh = int(twin.size());
   UnionFind fans(nh);

@@ -17,6 +17,15 @@ inline int previous_half_edge(int h) { return (h / 3) * 3 + (h % 3 + 2) % 3; }  
 // sorted by key (ties by h): the half-edges of one edge are neighbours.
 std::vector<std::pair<uint64_t, int>> half_edges_by_edge(const Eigen::MatrixXi& F);
 
+// The half-edges of each edge that exactly two faces of opposite orientation share, paired
+// (twin: the opposite of each half-edge, -1 across any other edge), and the count of edges shared
+// by more than two faces or by two that run the same way. keyed: half_edges_by_edge(F).
+struct EdgePairing {
+  std::vector<int> twin;
+  long long non_manifold = 0, misoriented = 0;
+};
+EdgePairing pair_manifold_half_edges(const Eigen::MatrixXi& F, const std::vector<std::pair<uint64_t, int>>& keyed);
+
 // The opposite half-edge of each half-edge, -1 on the boundary. Meant for edge-manifold,
 // consistently oriented meshes (checked beforehand by make_disk_mesh); on others the pairing of
 // an edge shared by more than two faces is arbitrary.

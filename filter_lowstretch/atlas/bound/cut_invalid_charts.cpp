@@ -44,7 +44,7 @@ std::vector<int> invalid_faces(const Eigen::MatrixXd& unit_V, const Eigen::Matri
   return invalid;
 }
 
-void cut_invalid_charts(std::vector<SolvedChart>& charts, std::vector<int>& guests, const std::vector<int>& face_chart,
+int cut_invalid_charts(std::vector<SolvedChart>& charts, std::vector<int>& guests, const std::vector<int>& face_chart,
                         const std::vector<int>& invalid, const std::vector<int>& stretched, bool into_faces,
                         const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const ChartOptions& options,
                         std::vector<int>& flat) {
@@ -54,6 +54,7 @@ void cut_invalid_charts(std::vector<SolvedChart>& charts, std::vector<int>& gues
     taken[size_t(f)] = 1;
     cut[size_t(face_chart[size_t(f)])] = 1;
   }
+  const int invalid_charts = int(std::count(cut.begin(), cut.end(), 1));
   for (const int c : stretched) split[size_t(c)] = cut[size_t(c)] = !cut[size_t(c)];
   const std::vector<int> twin = stretched.empty() ? std::vector<int>() : opposite_half_edges(F);
   guests.erase(std::remove_if(guests.begin(), guests.end(), [&](int g) { return cut[size_t(g)] != 0; }), guests.end());
@@ -96,6 +97,7 @@ void cut_invalid_charts(std::vector<SolvedChart>& charts, std::vector<int>& gues
   for (int& g : guests) g = new_index[size_t(g)];
   for (SolvedChart& piece : pieces) kept.push_back(std::move(piece));
   charts = std::move(kept);
+  return invalid_charts;
 }
 
 }  // namespace lowstretch

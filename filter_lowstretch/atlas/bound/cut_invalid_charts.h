@@ -21,8 +21,8 @@ std::vector<int> invalid_faces(const Eigen::MatrixXd& unit_V, const Eigen::Matri
 // invalid faces one by one and the connected parts of the rest, and the `stretched` charts (such
 // pieces far above the bound) in two where the stretch splits charts; into single faces if
 // `into_faces`. Maps the new charts. A cut chart is no longer a guest. A flat face left alone has
-// nothing to map: it goes to `flat`.
-void cut_invalid_charts(std::vector<SolvedChart>& charts, std::vector<int>& guests, const std::vector<int>& face_chart,
+// nothing to map: it goes to `flat`. Returns how many charts held invalid faces.
+int cut_invalid_charts(std::vector<SolvedChart>& charts, std::vector<int>& guests, const std::vector<int>& face_chart,
                         const std::vector<int>& invalid, const std::vector<int>& stretched, bool into_faces,
                         const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const ChartOptions& options,
                         std::vector<int>& flat);

@@ -12,30 +12,6 @@ namespace lowstretch {
 
 namespace {
 
-// The opposite of each half-edge across an edge that exactly two faces share with opposite
-// orientation, -1 across any other edge: the charts are cut open there. Counts the edges of
-// more than two faces and the edges whose two faces run the same way.
-std::vector<int> joining_half_edges(const Eigen::MatrixXi& F, int& non_manifold, int& misoriented) {
-  const std::vector<std::pair<uint64_t, int>> keyed = half_edges_by_edge(F);
-  std::vector<int> twin(size_t(3 * F.rows()), -1);
-  non_manifold = misoriented = 0;
-  for (size_t s = 0; s < keyed.size();) {
-    size_t e = s;
-    while (e < keyed.size() && keyed[e].first == keyed[s].first) ++e;
-    if (e - s > 2) ++non_manifold;
-    else if (e - s == 2) {
-      const int h0 = keyed[s].second, h1 = keyed[s + 1].second;
-      if (half_edge_tail(F, h0) == half_edge_tail(F, h1)) ++misoriented;
-      else {
-        twin[size_t(h0)] = h1;
-        twin[size_t(h1)] = h0;
-      }
-    }
-    s = e;
-  }
-  return twin;
-}
-
 // Gives every corner of `face` a new vertex at its position.
 void detach_face(Eigen::Index face, Eigen::MatrixXi& F, std::vector<int>& origin) {
   for (int k = 0; k < 3; ++k) {
@@ -72,27 +48,31 @@ SplitFans split_vertex_fans(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) 
       detach_face(f, split.F, split.origin);
       ++split.repeated_vertex_faces;
     }
-  split_fans(joining_half_edges(split.F, split.non_manifold_edges, split.misoriented_edges), split.F, split.origin);
+  // The charts are cut open across every edge not shared by exactly two faces of opposite
+  // orientation (pair_manifold_half_edges leaves those unpaired).
+  EdgePairing pairing = pair_manifold_half_edges(split.F, half_edges_by_edge(split.F));
+  split.non_manifold_edges = int(pairing.non_manifold);
+  split.misoriented_edges = int(pairing.misoriented);
+  split_fans(pairing.twin, split.F, split.origin);
   // Faces joined around both ends of a cut edge get one copy of each end again, and so share the
   // edge again; where that edge is still not manifold (faces pinched together elsewhere), its
   // faces get corners of their own. Each round detaches faces, so this ends.
   for (;;) {
-    int non_manifold = 0, misoriented = 0;
-    const std::vector<int> twin = joining_half_edges(split.F, non_manifold, misoriented);
-    if (non_manifold + misoriented == 0) break;
     const std::vector<std::pair<uint64_t, int>> keyed = half_edges_by_edge(split.F);
+    pairing = pair_manifold_half_edges(split.F, keyed);
+    if (pairing.non_manifold + pairing.misoriented == 0) break;
     std::vector<char> detach(size_t(F.rows()), 0);
     for (size_t s = 0; s < keyed.size();) {
       size_t e = s;
       while (e < keyed.size() && keyed[e].first == keyed[s].first) ++e;
-      const bool joined = e - s == 2 && twin[size_t(keyed[s].second)] >= 0;
+      const bool joined = e - s == 2 && pairing.twin[size_t(keyed[s].second)] >= 0;
       if (e - s >= 2 && !joined)
         for (size_t j = s; j < e; ++j) detach[size_t(keyed[j].second / 3)] = 1;
       s = e;
     }
     for (Eigen::Index f = 0; f < F.rows(); ++f)
       if (detach[size_t(f)]) detach_face(f, split.F, split.origin);
-    split_fans(joining_half_edges(split.F, non_manifold, misoriented), split.F, split.origin);
+    split_fans(pair_manifold_half_edges(split.F, half_edges_by_edge(split.F)).twin, split.F, split.origin);
   }
   split.new_vertices = int(split.origin.size()) - int(V.rows());
   split.V.resize(Eigen::Index(split.origin.size()), V.cols());

@@ -271,12 +271,8 @@ ChartsResult atlas_of(std::vector<SolvedChart> charts, std::vector<int> guests, 
                                " with flipped or zero-area triangles cut smaller and laid out again");
       return result;
     }
-    std::vector<int> invalid_charts;
-    for (const int f : invalid) invalid_charts.push_back(result.face_chart[size_t(f)]);
-    std::sort(invalid_charts.begin(), invalid_charts.end());
-    cut += size_t(std::unique(invalid_charts.begin(), invalid_charts.end()) - invalid_charts.begin());
-    cut_invalid_charts(charts, guests, result.face_chart, invalid, stretched, round + 1 == kTuning.most_repair_rounds, unit_V, F,
-                       options, flat);
+    const bool into_faces = round + 1 == kTuning.most_repair_rounds;
+    cut += size_t(cut_invalid_charts(charts, guests, result.face_chart, invalid, stretched, into_faces, unit_V, F, options, flat));
   }
 }
 
