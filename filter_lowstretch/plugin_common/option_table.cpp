@@ -62,6 +62,9 @@ std::vector<OptionRow> make_table() {
        "boundary fixed, no triangle flips), for at most 10 times the time the passes took.",
        [](const ChartOptions& o) { return double(o.disk.refine); },
        [](ChartOptions& o, double v) { o.disk.refine = v != 0; }},
+      {"max_charts", "--max-charts", "", "", OptionKind::Whole, {}, {}, "at least 1", kToolOnly,
+       "Charts: at most this many; a chart the limit leaves uncut may stretch more than Max chart stretch.",
+       [](const ChartOptions& o) { return double(o.max_charts); }, [](ChartOptions& o, double v) { o.max_charts = int(v); }},
       {"solver", "--solver", "", "", OptionKind::Choice, {"amg", "direct"}, {}, "", kToolOnly,
        "How each pass is solved: algebraic multigrid with BiCGStab (falling back to the sparse LU for a pass "
        "where it does not converge), or the sparse LU (UMFPACK).",

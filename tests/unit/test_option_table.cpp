@@ -87,7 +87,7 @@ TEST(OptionTable, DefaultsAreAccepted) {
 TEST(OptionTable, TheCoreNamesRejectedValuesByTheTable) {
   const std::vector<std::pair<std::string, double>> bad = {
       {"exponent", 0}, {"exponent", 1.5}, {"max_passes", -1}, {"max_passes", 1001}, {"max_stretch", 0.99},
-      {"texture_size", 7}, {"texture_size", 65537}, {"gutter", 0.4}, {"gutter", 129}};
+      {"texture_size", 7}, {"texture_size", 65537}, {"gutter", 0.4}, {"gutter", 129}, {"max_charts", 0}};
   for (const auto& b : bad) {
     const OptionRow* row = option_named(b.first);
     ASSERT_NE(row, nullptr) << b.first;
