@@ -96,6 +96,15 @@ check "too many passes" 1 "$work/disk.off" --max-passes 1001 -o "$work/out.ply"
 grep -q -- "--max-passes must be from 0 to 1000, got 1001" "$work/stderr" && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL message names --max-passes"; }
 check "bad solver" 1 "$work/disk.off" --solver cg -o "$work/out.ply"
 check "direct solver" 0 "$work/disk.off" --solver direct -o "$work/out.ply"
+# Every bad value of every option exits 1 with nothing written (the option table, CLI11, the core).
+for bad in "--weights cotan" "--exponent 0" "--exponent nan" "--exponent abc" "--max-passes -1" "--max-passes 2.5" \
+           "--max-stretch inf" "--texture-size 4" "--texture-size 1e9" "--gutter 0.1" "--gutter 200" "--max-charts 0" \
+           "--non-disk" "--boundary" "--atlas --non-disk reject" "--frobnicate" "--refine=maybe"; do
+  # shellcheck disable=SC2086
+  check "bad value: $bad" 1 "$work/disk.off" $bad -o "$work/out.ply"
+done
+check "no input" 1 -o "$work/out.ply"
+check "two inputs" 1 "$work/disk.off" "$work/two.off" -o "$work/out.ply"
 check "unwritable output" 4 "$work/disk.off" -o "$work/no/such/folder/out.ply"
 # An existing output stays untouched when the input is bad.
 echo keep >"$work/keep.ply"
