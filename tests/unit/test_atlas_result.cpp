@@ -11,6 +11,7 @@
 #include "atlas/chart_map/solved_chart.h"
 #include "atlas/measure/atlas_result.h"
 #include "core/stretch.h"
+#include "chart_fixtures.h"
 #include "generated_meshes.h"
 #include "layout_checks.h"
 
@@ -20,26 +21,6 @@ namespace {
 
 ChartsResult charts_of(const testmesh::Mesh& m) { return parameterize_charts(m.V, m.F, ChartOptions()); }
 
-// A texture so fine that the gutter costs no measurable area: every chart at one texel density.
-ChartsResult fine_charts_of(const testmesh::Mesh& m, double max_stretch = 1e5) {
-  ChartOptions options;
-  options.non_disk = NonDisk::Charts;
-  options.max_stretch = max_stretch;
-  options.texture_size = 65536;
-  options.gutter = 0.5;
-  return parameterize_charts(m.V, m.F, options);
-}
-// All of m's faces `faces` (all of them if empty) as one chart, mapped by the method onto its own rectangle.
-SolvedChart solved_chart_of(const testmesh::Mesh& m, std::vector<int> faces = {}) {
-  SolvedChart chart;
-  if (faces.empty())
-    for (Eigen::Index f = 0; f < m.F.rows(); ++f) faces.push_back(int(f));
-  chart.faces = faces;
-  std::vector<int> local_of(size_t(m.V.rows()), -1);
-  EXPECT_FALSE(make_chart_mesh(m.V, m.F, chart.faces, local_of, chart.mesh));
-  solve_chart(chart, Options(), 0);
-  return chart;
-}
 // The stretch of the stored corners, measured again here as a mesh of three vertices per face.
 double l2_of_stored(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& stored) {
   Eigen::MatrixXd corner_V(3 * F.rows(), 3), corner_uv(3 * F.rows(), 2);

@@ -16,6 +16,7 @@
 #include "atlas/charts.h"
 #include "core/half_edges.h"
 #include "core/stretch.h"
+#include "chart_fixtures.h"
 #include "generated_meshes.h"
 #include "layout_checks.h"
 #include "tool/mesh_io.h"
@@ -30,15 +31,6 @@ ChartsResult charts_of(const testmesh::Mesh& m, NonDisk non_disk = NonDisk::Char
   ChartOptions options;
   options.non_disk = non_disk;
   options.max_stretch = max_stretch;
-  return parameterize_charts(m.V, m.F, options);
-}
-
-// NonDisk::Atlas: a disk too is cut while it stretches more than the bound.
-ChartsResult bounded_atlas(const testmesh::Mesh& m, double max_stretch = ChartOptions().max_stretch, int max_charts = 1000) {
-  ChartOptions options;
-  options.non_disk = NonDisk::Atlas;
-  options.max_stretch = max_stretch;
-  options.max_charts = max_charts;
   return parameterize_charts(m.V, m.F, options);
 }
 

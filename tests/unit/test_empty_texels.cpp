@@ -15,6 +15,7 @@
 #include "atlas/chart_map/solved_chart.h"
 #include "atlas/pack/empty_texels.h"
 #include "atlas/pack/lay_out_charts.h"
+#include "chart_fixtures.h"
 #include "generated_meshes.h"
 #include "layout_checks.h"
 
@@ -22,25 +23,6 @@ using namespace lowstretch;
 
 namespace {
 
-ChartsResult bounded_atlas(const testmesh::Mesh& m, double max_stretch = ChartOptions().max_stretch, int max_charts = 1000) {
-  ChartOptions options;
-  options.non_disk = NonDisk::Atlas;
-  options.max_stretch = max_stretch;
-  options.max_charts = max_charts;
-  return parameterize_charts(m.V, m.F, options);
-}
-
-// All of m's faces `faces` (all of them if empty) as one chart, mapped by the method onto its own rectangle.
-SolvedChart solved_chart_of(const testmesh::Mesh& m, std::vector<int> faces = {}) {
-  SolvedChart chart;
-  if (faces.empty())
-    for (Eigen::Index f = 0; f < m.F.rows(); ++f) faces.push_back(int(f));
-  chart.faces = faces;
-  std::vector<int> local_of(size_t(m.V.rows()), -1);
-  EXPECT_FALSE(make_chart_mesh(m.V, m.F, chart.faces, local_of, chart.mesh));
-  solve_chart(chart, Options(), 0);
-  return chart;
-}
 // The least distance between two triangles that do not overlap: from a corner of one to a side of
 // the other.
 double triangle_distance(const Eigen::Vector2d a[3], const Eigen::Vector2d b[3]) {

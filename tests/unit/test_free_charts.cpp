@@ -8,39 +8,18 @@
 #include "atlas/charts.h"
 #include "atlas/chart_map/free_charts.h"
 #include "atlas/chart_map/solved_chart.h"
+#include "chart_fixtures.h"
 #include "generated_meshes.h"
 #include "layout_checks.h"
 
 using namespace lowstretch;
-
-namespace {
-
-ChartsResult bounded_atlas(const testmesh::Mesh& m, double max_stretch = ChartOptions().max_stretch, int max_charts = 1000) {
-  ChartOptions options;
-  options.non_disk = NonDisk::Atlas;
-  options.max_stretch = max_stretch;
-  options.max_charts = max_charts;
-  return parameterize_charts(m.V, m.F, options);
-}
-
-// All of m as one chart, mapped by the method onto its own rectangle.
-SolvedChart chart_on_rectangle(const testmesh::Mesh& m) {
-  SolvedChart chart;
-  for (Eigen::Index f = 0; f < m.F.rows(); ++f) chart.faces.push_back(int(f));
-  std::vector<int> local_of(size_t(m.V.rows()), -1);
-  EXPECT_FALSE(make_chart_mesh(m.V, m.F, chart.faces, local_of, chart.mesh));
-  solve_chart(chart, Options(), 0);
-  return chart;
-}
-
-}  // namespace
 
 // A flat tapered face (1 wide at one end, 0.1 at the other) stretches on its rectangle; seen
 // along its normal it is exact (L2 1). A curved cap is not flat and keeps its rectangle.
 TEST(FreeCharts, FlatChartIsSeenAlongItsNormalAndCurvedOneKeepsItsRectangle) {
   testmesh::Mesh web = testmesh::grid(12);
   web.V.col(0) = (web.V.col(0).array() - 0.5) * (1 - 0.9 * web.V.col(1).array()) + 0.5;
-  std::vector<SolvedChart> charts = {chart_on_rectangle(web), chart_on_rectangle(testmesh::hemisphere(8, 16))};
+  std::vector<SolvedChart> charts = {solved_chart_of(web), solved_chart_of(testmesh::hemisphere(8, 16))};
   ASSERT_FALSE(charts[0].map.error);
   ASSERT_FALSE(charts[1].map.error);
   const double web_on_rectangle = charts[0].kept.l2_stretch, cap_on_rectangle = charts[1].kept.l2_stretch;

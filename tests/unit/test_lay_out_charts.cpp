@@ -12,6 +12,7 @@
 #include "atlas/charts.h"
 #include "atlas/chart_map/solved_chart.h"
 #include "atlas/pack/lay_out_charts.h"
+#include "chart_fixtures.h"
 #include "generated_meshes.h"
 #include "layout_checks.h"
 
@@ -19,34 +20,6 @@ using namespace lowstretch;
 
 namespace {
 
-ChartsResult bounded_atlas(const testmesh::Mesh& m, double max_stretch = ChartOptions().max_stretch, int max_charts = 1000) {
-  ChartOptions options;
-  options.non_disk = NonDisk::Atlas;
-  options.max_stretch = max_stretch;
-  options.max_charts = max_charts;
-  return parameterize_charts(m.V, m.F, options);
-}
-
-// A texture so fine that the gutter costs no measurable area: every chart at one texel density.
-ChartsResult fine_charts_of(const testmesh::Mesh& m, double max_stretch = 1e5) {
-  ChartOptions options;
-  options.non_disk = NonDisk::Charts;
-  options.max_stretch = max_stretch;
-  options.texture_size = 65536;
-  options.gutter = 0.5;
-  return parameterize_charts(m.V, m.F, options);
-}
-// All of m's faces `faces` (all of them if empty) as one chart, mapped by the method onto its own rectangle.
-SolvedChart solved_chart_of(const testmesh::Mesh& m, std::vector<int> faces = {}) {
-  SolvedChart chart;
-  if (faces.empty())
-    for (Eigen::Index f = 0; f < m.F.rows(); ++f) faces.push_back(int(f));
-  chart.faces = faces;
-  std::vector<int> local_of(size_t(m.V.rows()), -1);
-  EXPECT_FALSE(make_chart_mesh(m.V, m.F, chart.faces, local_of, chart.mesh));
-  solve_chart(chart, Options(), 0);
-  return chart;
-}
 // The UV area of a chart's real faces (not those closing its holes), summed here.
 double real_uv_area(const SolvedChart& c) {
   double area = 0;

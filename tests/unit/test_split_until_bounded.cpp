@@ -12,20 +12,13 @@
 #include "atlas/base/tuning.h"
 #include "atlas/charts.h"
 #include "atlas/bound/split_until_bounded.h"
+#include "chart_fixtures.h"
 #include "generated_meshes.h"
 #include "layout_checks.h"
 
 using namespace lowstretch;
 
 namespace {
-
-ChartsResult bounded_atlas(const testmesh::Mesh& m, double max_stretch = ChartOptions().max_stretch, int max_charts = 1000) {
-  ChartOptions options;
-  options.non_disk = NonDisk::Atlas;
-  options.max_stretch = max_stretch;
-  options.max_charts = max_charts;
-  return parameterize_charts(m.V, m.F, options);
-}
 
 // The atlas of m with cuts ahead (the default) and with every part mapped before it is cut: the
 // same, byte for byte.

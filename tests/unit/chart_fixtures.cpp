@@ -1,0 +1,35 @@
+#include "chart_fixtures.h"
+
+#include <gtest/gtest.h>
+
+namespace lowstretch {
+
+ChartsResult bounded_atlas(const testmesh::Mesh& m, double max_stretch, int max_charts) {
+  ChartOptions options;
+  options.non_disk = NonDisk::Atlas;
+  options.max_stretch = max_stretch;
+  options.max_charts = max_charts;
+  return parameterize_charts(m.V, m.F, options);
+}
+
+ChartsResult fine_charts_of(const testmesh::Mesh& m, double max_stretch) {
+  ChartOptions options;
+  options.non_disk = NonDisk::Charts;
+  options.max_stretch = max_stretch;
+  options.texture_size = 65536;
+  options.gutter = 0.5;
+  return parameterize_charts(m.V, m.F, options);
+}
+
+SolvedChart solved_chart_of(const testmesh::Mesh& m, std::vector<int> faces) {
+  SolvedChart chart;
+  if (faces.empty())
+    for (Eigen::Index f = 0; f < m.F.rows(); ++f) faces.push_back(int(f));
+  chart.faces = faces;
+  std::vector<int> local_of(size_t(m.V.rows()), -1);
+  EXPECT_FALSE(make_chart_mesh(m.V, m.F, chart.faces, local_of, chart.mesh));
+  solve_chart(chart, Options(), 0);
+  return chart;
+}
+
+}  // namespace lowstretch
