@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
+#include "layout_checks.h"
+
 namespace lowstretch {
 
 ChartsResult bounded_atlas(const testmesh::Mesh& m, double max_stretch, int max_charts) {
@@ -30,6 +34,14 @@ SolvedChart solved_chart_of(const testmesh::Mesh& m, std::vector<int> faces) {
   EXPECT_FALSE(make_chart_mesh(m.V, m.F, chart.faces, local_of, chart.mesh));
   solve_chart(chart, Options(), 0);
   return chart;
+}
+double real_uv_area(const SolvedChart& c) {
+  double area = 0;
+  for (Eigen::Index f = 0; f < Eigen::Index(c.faces.size()); ++f) {
+    const Eigen::Vector2d a = c.map.uv.row(c.mesh.F(f, 0)), b = c.map.uv.row(c.mesh.F(f, 1)), d = c.map.uv.row(c.mesh.F(f, 2));
+    area += std::abs(signed_area(a, b, d));
+  }
+  return area;
 }
 
 }  // namespace lowstretch

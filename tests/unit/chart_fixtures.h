@@ -14,5 +14,7 @@ ChartsResult bounded_atlas(const testmesh::Mesh& m, double max_stretch = ChartOp
 ChartsResult fine_charts_of(const testmesh::Mesh& m, double max_stretch = 1e5);
 // All of m's faces `faces` (all of them if empty) as one chart, mapped by the method onto its own rectangle.
 SolvedChart solved_chart_of(const testmesh::Mesh& m, std::vector<int> faces = {});
+// The UV area of a chart's real faces (not those closing its holes), summed here.
+double real_uv_area(const SolvedChart& c);
 
 }  // namespace lowstretch

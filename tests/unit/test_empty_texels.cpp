@@ -80,16 +80,6 @@ std::vector<size_t> charts_inside_the_box_of_face_0(const testmesh::Mesh& m, con
   return inside;
 }
 
-// The UV area of a chart's real faces (not those closing its holes), summed here.
-double real_uv_area(const SolvedChart& c) {
-  double area = 0;
-  for (Eigen::Index f = 0; f < Eigen::Index(c.faces.size()); ++f) {
-    const Eigen::Vector2d a = c.map.uv.row(c.mesh.F(f, 0)), b = c.map.uv.row(c.mesh.F(f, 1)), d = c.map.uv.row(c.mesh.F(f, 2));
-    area += std::abs(signed_area(a, b, d));
-  }
-  return area;
-}
-
 // A host with a large closed hole laid out alone over [0,1]^2 (its map's box onto the square), and
 // a guest: grid(3) at `guest_scale`, whose corners are set to -7 (not placed).
 struct HostAndGuest {

@@ -18,20 +18,6 @@
 
 using namespace lowstretch;
 
-namespace {
-
-// The UV area of a chart's real faces (not those closing its holes), summed here.
-double real_uv_area(const SolvedChart& c) {
-  double area = 0;
-  for (Eigen::Index f = 0; f < Eigen::Index(c.faces.size()); ++f) {
-    const Eigen::Vector2d a = c.map.uv.row(c.mesh.F(f, 0)), b = c.map.uv.row(c.mesh.F(f, 1)), d = c.map.uv.row(c.mesh.F(f, 2));
-    area += std::abs(signed_area(a, b, d));
-  }
-  return area;
-}
-
-}  // namespace
-
 // Charts lie in disjoint cells, so their bounding boxes are apart by the gutter along x or y, in
 // texels of the chosen texture; and the border of [0,1]^2 is a gutter away.
 TEST(LayOutCharts, GutterBetweenChartsIsCountedInTexels) {
