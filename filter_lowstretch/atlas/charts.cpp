@@ -37,21 +37,23 @@ std::vector<char> used_vertices(Eigen::Index vertices, const Eigen::MatrixXi& F)
   return used;
 }
 
-// The rows of V that faces use.
-Eigen::MatrixXd used_rows(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
-  const std::vector<char> used = used_vertices(V.rows(), F);
+// The rows of V that are `used`.
+Eigen::MatrixXd rows_where(const Eigen::MatrixXd& V, const std::vector<char>& used) {
   Eigen::MatrixXd rows(std::count(used.begin(), used.end(), 1), V.cols());
   for (Eigen::Index v = 0, r = 0; v < V.rows(); ++v)
     if (used[size_t(v)]) rows.row(r++) = V.row(v);
   return rows;
 }
 
+// The rows of V that faces use.
+Eigen::MatrixXd used_rows(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) { return rows_where(V, used_vertices(V.rows(), F)); }
+
 // The used vertices moved into make_disk_mesh's unit box, so that huge coordinates do not
 // overflow lengths and areas; `unit` converts lengths back to the input's units.
 Eigen::MatrixXd unit_box_of_used(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, double& unit) {
-  const UnitBox box = unit_box(used_rows(V, F));
-  unit = box.unit();
   const std::vector<char> used = used_vertices(V.rows(), F);
+  const UnitBox box = unit_box(rows_where(V, used));
+  unit = box.unit();
   Eigen::MatrixXd scaled = Eigen::MatrixXd::Zero(V.rows(), 3);
   for (Eigen::Index v = 0; v < V.rows(); ++v)
     if (used[size_t(v)]) scaled.row(v) = box.map(V.row(v));

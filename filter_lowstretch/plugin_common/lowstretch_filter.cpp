@@ -45,14 +45,7 @@ std::string header_line(int vertices, int faces, const ChartOptions& options) {
   const char* separator = "; ";
   for (const OptionRow& row : option_table()) {
     if (row.places != kToolAndFilter) continue;
-    const double value = row.get(options);
-    std::string text;
-    switch (row.kind) {
-      case OptionKind::Choice: text = row.words.at(size_t(value)); break;
-      case OptionKind::Switch: text = value != 0 ? "on" : "off"; break;
-      default: text = format("%g", value);
-    }
-    line += separator + std::string(row.name) + " " + text;
+    line += separator + std::string(row.name) + " " + value_text(row, options);
     separator = ", ";
   }
   return line;

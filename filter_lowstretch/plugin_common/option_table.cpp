@@ -90,8 +90,10 @@ const OptionRow* option_named(const std::string& name) {
   return nullptr;
 }
 
-std::string default_text(const OptionRow& row) {
-  const double value = row.get(ChartOptions());
+std::string default_text(const OptionRow& row) { return value_text(row, ChartOptions()); }
+
+std::string value_text(const OptionRow& row, const ChartOptions& options) {
+  const double value = row.get(options);
   switch (row.kind) {
     case OptionKind::Choice: return row.words.at(size_t(value));
     case OptionKind::Switch: return value != 0 ? "on" : "off";

@@ -34,7 +34,9 @@ struct OptionRow {
 const std::vector<OptionRow>& option_table();
 // The row of an option by its core name, or nullptr.
 const OptionRow* option_named(const std::string& name);
-// The value a row has in default ChartOptions, as the user would type it ("square", "1.2", "off").
+// A row's value in `options` as the user would type it ("square", "1.2", "off").
+std::string value_text(const OptionRow& row, const ChartOptions& options);
+// The same in default ChartOptions.
 std::string default_text(const OptionRow& row);
 // The option reference of filter_lowstretch/README.md, as a Markdown table.
 std::string options_markdown();

@@ -64,7 +64,7 @@ struct AtlasTuning {
   // The cuts tried: their faces are mostly flat, so more cuts leave charts that fill their
   // rectangles with little stretch; edges sharper than 30 degrees also part a large face from its
   // fillets, which stretch on a rectangle shared with it.
-  FacesCut faces_cuts[3] = {{80, 1}, {80, 0.5}, {30, 0.5}};
+  FacesCut faces_cuts[3] = {{sharp_edge_degrees, 1}, {sharp_edge_degrees, 0.5}, {30, 0.5}};
   // The gentler cuts are tried only while the best atlas has a lower efficiency: they cost time
   // and do not improve an atlas that already uses the texture well.
   double gentler_cut_below = 0.7;
