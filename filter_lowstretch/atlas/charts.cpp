@@ -18,7 +18,9 @@
 #include "atlas/cut/mesh_components.h"
 #include "atlas/cut/sharp_patches.h"
 #include "atlas/chart_map/solved_chart.h"
+#include "atlas/bound/merge_neighbours.h"
 #include "atlas/bound/split_until_bounded.h"
+#include "core/half_edges.h"
 #include "atlas/cut/split_vertex_fans.h"
 #include "core/stretch.h"
 #include "atlas/cut/zero_area_parts.h"
@@ -28,6 +30,8 @@ namespace lowstretch {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // Which vertices the faces use.
 std::vector<char> used_vertices(Eigen::Index vertices, const Eigen::MatrixXi& F) {
@@ -60,11 +64,18 @@ Eigen::MatrixXd unit_box_of_used(const Eigen::MatrixXd& V, const Eigen::MatrixXi
   return scaled;
 }
 
+// The least efficiency the undone cuts keep.
+double min_efficiency(const ChartOptions& o) {
+  return o.fewer_seams ? std::min(o.min_efficiency, kTuning.fewer_seams_efficiency) : o.min_efficiency;
+}
+
 Error check_chart_options(const ChartOptions& o) {
   if (!(o.max_stretch >= 1 && o.max_stretch < 1e6))
     return {ErrorCode::InvalidOption, 0, "must be at least 1, got " + number_text(o.max_stretch), "max_stretch"};
   if (o.most_cuts_ahead < 0 || o.most_cuts_ahead > 16)
     return {ErrorCode::InvalidOption, 0, "must be from 0 to 16, got " + std::to_string(o.most_cuts_ahead), "most_cuts_ahead"};
+  if (!(o.min_efficiency >= 0 && o.min_efficiency <= 1))
+    return {ErrorCode::InvalidOption, 0, "must be from 0 to 1, got " + number_text(o.min_efficiency), "min_efficiency"};
   if (o.max_charts < 1) return {ErrorCode::InvalidOption, 0, "must be at least 1, got " + std::to_string(o.max_charts), "max_charts"};
   if (o.texture_size < 8 || o.texture_size > 65536)
     return {ErrorCode::InvalidOption, 0, "must be from 8 to 65536, got " + std::to_string(o.texture_size), "texture_size"};
@@ -155,6 +166,8 @@ struct AtlasSearch {
   // to leave texels empty: small charts are put into them on the best atlas only (filling every
   // candidate can find a better one, but costs much more time).
   std::vector<SolvedChart> kept, tried;
+  // The best atlas's charts as cut, before any was mapped free: merging starts from them.
+  std::vector<SolvedChart> cut;
 
   AtlasSearch(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options)
       : V(V), F(F), options(options), reporting(options) {
@@ -216,6 +229,7 @@ Error cut_along_sharp_edges(AtlasSearch& s) {
       s.result = std::move(by_faces);
       s.made = true;
       s.kept = std::move(s.tried);
+      s.cut = by_faces_leaves;
       s.notes.resize(s.common_notes);  // the cut's notes go with its atlas
       s.notes.insert(s.notes.end(), by_faces_notes.begin(), by_faces_notes.end());
       s.notes.push_back("charts cut along the sharp edges (a model made of faces; normals more than " +
@@ -227,13 +241,64 @@ Error cut_along_sharp_edges(AtlasSearch& s) {
   return {};
 }
 
+// Candidates: the best atlas's charts merged with their neighbours (merge_neighbours.h), further
+// and further (kTuning.merge_growths, then halving the first step that went too far), while the
+// atlas keeps options.min_efficiency and kTuning.merge_keeps of its own; the one with the
+// shortest seams replaces it. Whether one did.
+bool merge_for_shorter_seams(AtlasSearch& s) {
+  const double least = std::max(min_efficiency(s.options), kTuning.merge_keeps[s.options.fewer_seams] * texture_efficiency(s.result));
+  if (s.result.error || s.cut.empty() || !(texture_efficiency(s.result) >= least)) return false;
+  const ChartsResult unmerged = s.result;
+  NeighbourMerging merging(std::move(s.cut), s.unit_V, s.F, opposite_half_edges(s.F), s.options);
+  // Whether the first `merges` merges keep the least efficiency; the atlas with the shortest seams is kept.
+  const auto keeps_least = [&](size_t merges) {
+    std::vector<SolvedChart> charts = merging.charts_after(merges);
+    free_the_charts_that_stretch(charts, s.options);
+    ChartsResult merged = s.tile(std::move(charts));
+    if (merged.error || !(texture_efficiency(merged) >= least)) return false;
+    if (merged.seam_length < s.result.seam_length) {
+      s.result = std::move(merged);
+      s.kept = std::move(s.tried);
+    }
+    return true;
+  };
+  size_t good = 0, bad = 0;
+  double reached = texture_efficiency(unmerged), at = 1;  // the last good layout's efficiency, at that growth
+  for (const double growth : kTuning.merge_growths) {
+    // The efficiency falls about as the cost grows: a step bound to end far below the least is not made.
+    if (reached * at / (1 + growth) < kTuning.merge_step_may_fall * least) break;
+    merging.merge_within(1 + growth);
+    if (merging.merges() == good) continue;
+    if (!keeps_least(merging.merges())) {
+      bad = merging.merges();
+      break;
+    }
+    good = merging.merges();
+    reached = texture_efficiency(s.result);
+    at = 1 + growth;
+  }
+  for (int halving = 0; halving < kTuning.merge_halvings && bad > good + 1; ++halving) {
+    const size_t middle = (good + bad) / 2;
+    if (keeps_least(middle)) good = middle;
+    else bad = middle;
+  }
+  if (s.result.charts.size() >= unmerged.charts.size()) return false;
+  s.notes.push_back(std::to_string(unmerged.charts.size() - s.result.charts.size()) + " charts merged for shorter seams (" +
+                    number_text(unmerged.seam_length) + " -> " + number_text(s.result.seam_length) + "): efficiency " +
+                    number_text(texture_efficiency(s.result)) + " (coverage / L2^2) against " + number_text(texture_efficiency(unmerged)) +
+                    ", at least " + number_text(least));
+  return true;
+}
+
 // Candidates: the components cut by stretch until they meet the bound, and, unless that is
-// clearly better than they could be whole, one chart per component that was not cut.
+// clearly better than they could be whole, one chart per component that was not cut; the
+// cut atlas with charts merged for shorter seams.
 Error cut_by_stretch(AtlasSearch& s) {
   std::vector<std::string> by_stretch_notes(s.notes.begin(), s.notes.begin() + long(s.common_notes));
   std::vector<SolvedChart> leaves, uncut;
   if (Error e = split_until_bounded(s.unit_V, s.F, std::move(s.components), s.reporting, leaves, uncut, by_stretch_notes))
     return e;
+  std::vector<SolvedChart> unfreed = leaves;  // merging starts from them
   free_the_charts_that_stretch(leaves, s.options);
   const size_t cut_into = leaves.size();
   ChartsResult by_stretch = s.tile(std::move(leaves));
@@ -246,11 +311,13 @@ Error cut_by_stretch(AtlasSearch& s) {
                                  number_text(texture_efficiency(whole)));
       by_stretch = std::move(whole);
       by_stretch_kept = std::move(s.tried);
+      unfreed.clear();  // parts have no neighbours to merge with
     }
   }
   if (!s.made || more_efficient(by_stretch, s.result)) {
     s.result = std::move(by_stretch);
     s.kept = std::move(by_stretch_kept);
+    s.cut = std::move(unfreed);
     s.notes = std::move(by_stretch_notes);
     s.made = true;
   }
@@ -300,6 +367,7 @@ ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, cons
   if (s.made_of_faces && !only_sharp_edges && above)
     if (Error e = cut_along_sharp_edges(s)) return failed_result(e);
   put_small_charts_in_empty_texels(s);
+  if (merge_for_shorter_seams(s)) put_small_charts_in_empty_texels(s);
   s.result.notes.insert(s.result.notes.begin(), s.notes.begin(), s.notes.end());
   return std::move(s.result);
 }
@@ -346,7 +414,6 @@ std::vector<std::string> split_notes(const SplitFans& split) {
 // are no sign of an unwelded mesh.
 ChartsResult disk_or_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options, bool own_copies);
 
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // parameterize's map of a disk as one chart, stored and measured as MeshLab holds it.
 ChartsResult disk_result(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options, Result whole,

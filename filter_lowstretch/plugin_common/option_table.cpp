@@ -46,6 +46,10 @@ std::vector<OptionRow> make_table() {
        "Charts: a chart whose L2 stretch is above this is cut in two. Lower gives less stretch, more charts and "
        "longer seams.",
        [](const ChartOptions& o) { return o.max_stretch; }, [](ChartOptions& o, double v) { o.max_stretch = v; }},
+      {"fewer_seams", "--fewer-seams", "fewerSeams", "Fewer seams", OptionKind::Switch, {}, {}, "", kToolAndFilter,
+       "Charts: undo more cuts, for seams about as short as UVAtlas's: the atlas keeps a texture efficiency "
+       "(coverage / L2^2) of 0.5 instead of 0.61 by default, so charts stretch more.",
+       [](const ChartOptions& o) { return double(o.fewer_seams); }, [](ChartOptions& o, double v) { o.fewer_seams = v != 0; }},
       {"texture_size", "--texture-size", "textureSize", "Texture size", OptionKind::Whole, {}, {}, "8 to 65536",
        kToolAndFilter,
        "Side in texels of the texture the map is made for (the size you give Transfer: Vertex Color to "
@@ -65,6 +69,11 @@ std::vector<OptionRow> make_table() {
       {"max_charts", "--max-charts", "", "", OptionKind::Whole, {}, {}, "at least 1", kToolOnly,
        "Charts: at most this many; a chart the limit leaves uncut may stretch more than Max chart stretch.",
        [](const ChartOptions& o) { return double(o.max_charts); }, [](ChartOptions& o, double v) { o.max_charts = int(v); }},
+      {"min_efficiency", "--min-efficiency", "", "", OptionKind::Real, {}, {}, "0 to 1", kToolOnly,
+       "Charts: once cut, cuts are undone, those saving the most seam for the texture they cost first, while the "
+       "atlas keeps this texture efficiency (coverage / L2^2); 1 undoes none. Lower gives shorter seams and more "
+       "stretch.",
+       [](const ChartOptions& o) { return o.min_efficiency; }, [](ChartOptions& o, double v) { o.min_efficiency = v; }},
       {"solver", "--solver", "", "", OptionKind::Choice, {"amg", "direct"}, {}, "", kToolOnly,
        "How each pass is solved: algebraic multigrid with BiCGStab (falling back to the sparse LU for a pass "
        "where it does not converge), or the sparse LU (UMFPACK).",

@@ -4,7 +4,10 @@
 measurement of xatlas and UVAtlas (listed below).
 
 usage: atlas_table.py --tool build/lowstretch --venv ~/.cache/filter_lowstretch/atlas-venv
-                      [--tool-args "--atlas"] [--markdown] [--skip-uvatlas] MESH...
+                      [--tool-args "--atlas"] [--markdown] [--skip-uvatlas] [--xatlas-brute-force] MESH...
+
+xatlas runs with its defaults; --xatlas-brute-force adds a row of xatlas with its brute-force
+packer (PackOptions.bruteForce), the slower and tighter one.
 
 Re-runs itself under the venv's python (made if missing, with PACKAGES; Open3D also needs Debian's
 libusb-1.0-0); each peer runs in a child process, so that a native crash is reported. Columns:
@@ -17,6 +20,8 @@ libusb-1.0-0); each peer runs in a child process, so that a native crash is repo
 - flips/zero-area: faces against their chart's majority orientation / faces with 3D area whose
   |UV area| <= 1e-12 of the layout square's area (a face of zero 3D area may map to zero area).
 The summary line also says whether every input face came back with texture coordinates.
+- out/in vertices: distinct (vertex, UV) pairs over the input's used vertices: what the seams cost
+  a GPU, which duplicates every vertex on a seam.
 - seconds: wall clock (ours: the whole process; peers: the parametrizing call only).
 - overlap px: raster pixels whose centre is inside two or more UV triangles.
 Exit status 1 when a tool failed (a crash, or an error exit other than our tool's 3, mesh not
@@ -79,10 +84,15 @@ def read_mesh(path):
 def worker(name, mesh_path, out):
     """Runs one peer on a mesh and saves the input faces it mapped and their per-corner UV."""
     V, F = read_mesh(mesh_path)
-    if name == "xatlas":
+    if name in ("xatlas", "xatlas-bf"):
         import xatlas
         start = time.perf_counter()
-        vmapping, indices, uvs = xatlas.parametrize(V, F)
+        atlas = xatlas.Atlas()
+        atlas.add_mesh(V, F)
+        pack = xatlas.PackOptions()
+        pack.bruteForce = name == "xatlas-bf"
+        atlas.generate(pack_options=pack)
+        vmapping, indices, uvs = atlas[0]
         seconds = time.perf_counter() - start
         faces, corner_uv = vmapping[indices], uvs[indices]  # xatlas keeps the faces' order and count
     else:
@@ -222,32 +232,36 @@ def atlas_metrics(V, F, corner_uv):
     neg = np.bincount(labels, ((area_uv < 0) & ~zero).astype(float))
     counts = raster_counts(uv, lo, side)
     coverage = (counts > 0).mean()
-    return {"charts": int(labels.max()) + 1, "l2": l2, "linf": linf, "coverage": coverage,
+    corners = np.column_stack([F.ravel(), uv.reshape(-1, 2)])
+    out_vertices = len(np.unique(corners, axis=0)) / len(np.unique(F))
+    return {"charts": int(labels.max()) + 1, "out_in": out_vertices, "l2": l2, "linf": linf, "coverage": coverage,
             "efficiency": coverage / l2 ** 2, "seam": seam, "flips": int(np.minimum(pos, neg).sum()),
             "zero": int(zero.sum()), "overlap": int((counts > 1).sum())}
 
 
 def cells(m):
     return [str(m["charts"]), f"{m['l2']:.3f}", f"{m['linf']:.1f}", f"{m['coverage']:.3f}", f"{m['efficiency']:.3f}",
-            f"{m['seam']:.2f}", f"{m['flips']}/{m['zero']}", f"{m['seconds']:.2f}", str(m["overlap"])]
+            f"{m['seam']:.2f}", f"{m['out_in']:.2f}", f"{m['flips']}/{m['zero']}", f"{m['seconds']:.2f}", str(m["overlap"])]
 
 
-COLUMNS = ["mesh", "V", "method", "charts", "L2", "Linf", "coverage", "efficiency", "seam", "flips/zero-area",
+COLUMNS = ["mesh", "V", "method", "charts", "L2", "Linf", "coverage", "efficiency", "seam", "out/in vertices", "flips/zero-area",
            "seconds", "overlap px"]
 
 
 def summary(name, results):
-    """One line: does ours beat the peers' best efficiency and UVAtlas's seam, how much faster than
-    UVAtlas is it, is it free of flips, zero-area triangles and overlap."""
+    """One line: does ours beat the peers' best efficiency, xatlas's seam and UVAtlas's seam, how
+    much faster than UVAtlas is it, is it free of flips, zero-area triangles and overlap."""
     ours, uva = results.get("lowstretch"), results.get("uvatlas")
     if not isinstance(ours, dict):
         return f"{name}: lowstretch gave no map"
     yes = {True: "yes", False: "no"}
     best = max([m["efficiency"] for m in results.values() if isinstance(m, dict) and m is not ours] or [0])
     text = f"{name}: efficiency {ours['efficiency']:.3f} >= peers' best {best:.3f}: {yes[ours['efficiency'] >= best]}"
+    for peer in ("xatlas", "uvatlas"):
+        if isinstance(results.get(peer), dict):
+            text += f"; seam {ours['seam']:.2f} <= {peer} {results[peer]['seam']:.2f}: {yes[ours['seam'] <= results[peer]['seam']]}"
     if isinstance(uva, dict):
-        text += (f"; seam {ours['seam']:.2f} <= uvatlas {uva['seam']:.2f}: {yes[ours['seam'] <= uva['seam']]}"
-                 f"; uvatlas / ours seconds {uva['seconds'] / ours['seconds']:.1f}")
+        text += f"; uvatlas / ours seconds {uva['seconds'] / ours['seconds']:.1f}"
     text += f"; every face written: {yes[ours['missing'] == 0]}"
     return text + f"; flips, zero-area, overlap all zero: {yes[ours['flips'] == ours['zero'] == ours['overlap'] == 0]}"
 
@@ -267,7 +281,7 @@ def run_mesh(mesh, methods, args):
                 row = cells(results[method])
             except ToolFailed as failure:
                 results[method] = str(failure)
-                row = [("failed " if failure.failed else "rejected: ") + str(failure)] + [""] * 8
+                row = [("failed " if failure.failed else "rejected: ") + str(failure)] + [""] * 9
                 failed += [f"{method} on {name}"] if failure.failed else []
             rows.append(([name, str(len(V_in))] if not rows else ["", ""]) + [method] + row)
             if args.markdown:
@@ -285,6 +299,7 @@ def main():
     parser.add_argument("--markdown", action="store_true")
     parser.add_argument("--skip-uvatlas", action="store_true", help="UVAtlas takes 1-40 s per mesh")
     parser.add_argument("--ours-only", action="store_true", help="no peers (tuning runs)")
+    parser.add_argument("--xatlas-brute-force", action="store_true", help="also xatlas with its brute-force packer")
     parser.add_argument("meshes", nargs="+", metavar="MESH")
     argv = sys.argv[1:]
     if "--tool-args" in argv[:-1]:  # so that a value starting with "--" is taken as the value
@@ -295,7 +310,8 @@ def main():
     if os.path.realpath(sys.prefix) != os.path.realpath(venv):  # numpy and the peers live in the venv
         python = ensure_venv(venv, not args.skip_uvatlas)
         os.execv(python, [python, os.path.abspath(__file__), *sys.argv[1:]])
-    methods = ["lowstretch"] + ([] if args.ours_only else ["xatlas"] + ([] if args.skip_uvatlas else ["uvatlas"]))
+    peers = ["xatlas"] + (["xatlas-bf"] if args.xatlas_brute_force else []) + ([] if args.skip_uvatlas else ["uvatlas"])
+    methods = ["lowstretch"] + ([] if args.ours_only else peers)
     failed, summaries = [], []
     if args.markdown:
         print("| " + " | ".join(COLUMNS) + " |\n|" + "---|" * len(COLUMNS), flush=True)

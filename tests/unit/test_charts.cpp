@@ -476,7 +476,10 @@ TEST(Charts, AScanWithEveryDefectAtOnceGetsAValidAtlas) {
 TEST(Charts, ModelMadeOfFacesIsCutAlongItsSharpEdges) {
   const int n = 8, side_faces = 2 * n * n;
   const testmesh::Mesh m = testmesh::cube(n);
-  const ChartsResult r = bounded_atlas(m);
+  ChartOptions options;
+  options.non_disk = NonDisk::Atlas;
+  options.min_efficiency = 1;  // no charts merged
+  const ChartsResult r = parameterize_charts(m.V, m.F, options);
   expect_valid_layout(m.F, r);
   ASSERT_EQ(r.charts.size(), 6u);
   for (Eigen::Index f = 0; f < m.F.rows(); ++f)
@@ -484,6 +487,25 @@ TEST(Charts, ModelMadeOfFacesIsCutAlongItsSharpEdges) {
   for (int side = 1; side < 6; ++side) EXPECT_NE(r.face_chart[size_t(side * side_faces)], r.face_chart[0]) << "side " << side;
   EXPECT_LT(r.layout.l2_stretch, 1.1);  // every side flat: only its cell's shape, not a square, stretches it
   EXPECT_NEAR(r.seam_length, 12.0, 1e-9) << "the seams are the unit cube's twelve edges";
+}
+
+// By default its sides are merged across some edges: whole sides per chart, each unfolded flat, so
+// fewer seams at little cost in texture.
+TEST(Charts, ModelMadeOfFacesMergesSidesForShorterSeams) {
+  const int n = 8, side_faces = 2 * n * n;
+  const testmesh::Mesh m = testmesh::cube(n);
+  ChartOptions options;
+  options.non_disk = NonDisk::Atlas;
+  const ChartsResult merged = parameterize_charts(m.V, m.F, options);
+  options.min_efficiency = 1;
+  const ChartsResult sides = parameterize_charts(m.V, m.F, options);
+  expect_valid_layout(m.F, merged, &m.V);
+  EXPECT_LT(merged.charts.size(), 6u);
+  EXPECT_LT(merged.seam_length, 12.0 - 1);  // at least one edge of the cube less
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+    EXPECT_EQ(merged.face_chart[size_t(f)], merged.face_chart[size_t(f - f % side_faces)]) << "face " << f;
+  EXPECT_LT(merged.layout.l2_stretch, 1.1);
+  EXPECT_GE(texture_efficiency(merged), 0.9 * texture_efficiency(sides));
 }
 
 // A bar of a cube is tried cut two ways (along its sides, and along them to a tighter bound): the

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "atlas/base/tuning.h"
+#include "atlas/bound/deciding_map.h"
 #include "atlas/chart_map/chart_threads.h"
 #include "core/half_edges.h"
 #include "atlas/cut/split_chart.h"
@@ -143,24 +144,6 @@ void undo_cuts_that_did_not_pay(ChartTree& tree, double max_stretch, const std::
     weighted[i] = own;
     area[i] = alone.area_3d;
   }
-}
-
-// The map that decides whether a chart is cut: onto its own rectangle, or the square where that
-// may bring it under the bound (a chart too small to cut takes the better of the two).
-void map_to_decide(SolvedChart& chart, const Options& deciding, double max_stretch) {
-  const bool may_cut = int(chart.faces.size()) >= 2 * kTuning.smallest_chart;
-  solve_chart(chart, deciding, 0, may_cut ? kTuning.square_may_meet * max_stretch : kInf);
-  chart.deciding_map = true;
-}
-
-// Deciding where to cut needs the map's stretch, not its last digits: U0 and U1 only, solved to
-// kTuning.deciding_tolerance, give the same cuts in less time. The layout maps each chart fully.
-Options deciding_options(Options deciding) {
-  deciding.max_passes = std::min(deciding.max_passes, 1);
-  deciding.solver.tolerance = std::max(deciding.solver.tolerance, kTuning.deciding_tolerance);
-  deciding.solver.residual_accepted = std::max(deciding.solver.residual_accepted, 100 * deciding.solver.tolerance);
-  deciding.solver.max_iterations = std::min(deciding.solver.max_iterations, kTuning.deciding_iterations);
-  return deciding;
 }
 
 // Whether a chart the bound cuts stays whole for its size (AtlasTuning::smallest_chart).

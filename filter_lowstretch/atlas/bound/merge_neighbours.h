@@ -1,0 +1,59 @@
+// Neighbouring charts merged (as UVAtlas's MergeSmallCharts and xatlas's mergeCharts do): the two
+// whose union, mapped, costs the least texture per length of the seam it removes first, again and
+// again. How far to go is the caller's: only a layout tells what a step costs the atlas, so the
+// merging goes on step by step.
+#pragma once
+#include <Eigen/Core>
+#include <map>
+#include <queue>
+#include <utility>
+#include <vector>
+
+#include "atlas/base/atlas_types.h"
+#include "atlas/chart_map/solved_chart.h"
+
+namespace lowstretch {
+
+class NeighbourMerging {
+ public:
+  // charts: those to merge (a chart with an invalid map takes no part); twin: opposite_half_edges(F).
+  NeighbourMerging(std::vector<SolvedChart> charts, const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F,
+                   const std::vector<int>& twin, const ChartOptions& options);
+  // Merges on while the charts' texture cost stays within `growth` times their cost before any merge.
+  void merge_within(double growth);
+  size_t merges() const { return merged_.size(); }
+  // The charts' texture cost after the first `merges` merges over their cost before any.
+  double growth(size_t merges) const { return merges == 0 ? 1 : growth_[merges - 1]; }
+  // The charts after the first `merges` merges, in the order of the pieces.
+  std::vector<SolvedChart> charts_after(size_t merges) const;
+
+ private:
+  // A union to try: two pieces, the seam between them, the union once mapped.
+  struct Candidate {
+    int a = 0, b = 0;
+    double seam = 0;
+    bool mapped = false, valid = false;
+    SolvedChart joined;
+  };
+  using Entry = std::pair<double, size_t>;  // cost per seam length (or its estimate), candidate
+  void map(Candidate& c, std::vector<int>& local_of);
+  double extra_cost(const Candidate& c) const;
+  void join(Candidate& c);
+
+  const Eigen::MatrixXd& unit_V_;
+  const Eigen::MatrixXi& F_;
+  Options deciding_;
+  std::vector<SolvedChart> pieces_;     // the charts, then the union each merge made
+  size_t charts_ = 0;
+  std::vector<std::pair<int, int>> merged_;  // merge k joined these two into piece charts_ + k
+  std::vector<double> growth_;
+  std::vector<std::vector<int>> sorted_faces_;
+  std::vector<char> alive_;
+  std::vector<std::map<int, double>> seam_with_;  // per piece: its neighbours and the seam with each
+  std::vector<Candidate> candidates_;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue_;
+  std::vector<std::vector<int>> local_of_;  // make_chart_mesh's scratch, per worker
+  double before_ = 0, cost_ = 0;
+};
+
+}  // namespace lowstretch
