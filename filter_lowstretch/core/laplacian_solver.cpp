@@ -11,6 +11,7 @@
 #include <amgcl/relaxation/gauss_seidel.hpp>
 #include <amgcl/solver/bicgstab.hpp>
 #include <boost/make_shared.hpp>
+#include <boost/range/iterator_range.hpp>
 
 #include "core/reused_coarsening.h"
 
@@ -192,10 +193,11 @@ bool LaplacianSolver::solve_amg(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& x) 
     try {
       const Clock::time_point column_start = Clock::now();
       const Krylov krylov(size_t(n), krylov_prm);
-      std::vector<double> b(rhs.col(c).data(), rhs.col(c).data() + n), u(x.col(c).data(), x.col(c).data() + n);
+      // The columns in place (Eigen stores them contiguously): no copy of either.
+      const auto b = boost::make_iterator_range(rhs.col(c).data(), rhs.col(c).data() + n);
+      auto u = boost::make_iterator_range(x.col(c).data(), x.col(c).data() + n);
       double estimate = 0;
       boost::tie(iterations[c], estimate) = krylov(A, *amg[two ? c : 0], b, u);
-      std::copy(u.begin(), u.end(), x.col(c).data());
       solving[c] = seconds_since(column_start);
     } catch (...) {
       failed[c] = true;
