@@ -6,16 +6,14 @@
 #include <system_error>
 #include <thread>
 
-// amgcl's CRS-tuple adapter uses boost::begin and boost::tuple without including them.
-#include <boost/range.hpp>
-#include <boost/tuple/tuple.hpp>
-#include <amgcl/adapter/crs_tuple.hpp>
 #include <amgcl/amg.hpp>
 #include <amgcl/backend/builtin.hpp>
-#include <amgcl/coarsening/smoothed_aggregation.hpp>
-#include <amgcl/make_solver.hpp>
-#include <amgcl/relaxation/ilu0.hpp>
+#include <amgcl/relaxation/gauss_seidel.hpp>
 #include <amgcl/solver/bicgstab.hpp>
+#include <boost/make_shared.hpp>
+#include <boost/range/iterator_range.hpp>
+
+#include "core/reused_coarsening.h"
 
 namespace lowstretch {
 
@@ -23,7 +21,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-using Backend = amgcl::backend::builtin<double>;
 // The coarsest level, solved by amgcl's own dense LU: at its default (3000 unknowns) that dense
 // solve is the slowest part of every cycle.
 constexpr unsigned kCoarseEnough = 1500;
@@ -32,9 +29,43 @@ constexpr unsigned kCoarseEnough = 1500;
 // atlas solves many small charts).
 constexpr int kMetisMinimumRows = 3000;
 
-using AmgSolver = amgcl::make_solver<
-    amgcl::amg<Backend, amgcl::coarsening::smoothed_aggregation, amgcl::relaxation::ilu0>,
-    amgcl::solver::bicgstab<Backend>>;
+// The hierarchy in float: it only preconditions, so its precision bounds the iterations, not the
+// answer, and float halves the bytes of values a cycle streams. Gauss-Seidel smoothing needs no
+// set-up and no memory, where ILU(0) factored every level.
+using Matrix32 = amgcl::backend::builtin<float>::matrix;
+using Hierarchy = amgcl::amg<amgcl::backend::builtin<float>, ReusedCoarsening<Matrix32>, amgcl::relaxation::gauss_seidel>;
+using Krylov = amgcl::solver::bicgstab<amgcl::backend::builtin<double>>;
+
+// A hierarchy as BiCGStab's preconditioner: its vectors in double, converted to float around a
+// V-cycle.
+class Preconditioner {
+ public:
+  Preconditioner(boost::shared_ptr<Matrix32> A, const Hierarchy::params& prm)
+      : amg_(A, prm), f_(amgcl::backend::rows(*A)), x_(f_.size()) {}
+  template <class Vec1, class Vec2>
+  void apply(const Vec1& rhs, Vec2& x) const {
+    for (size_t i = 0; i < f_.size(); ++i) f_[i] = float(rhs[i]);
+    amg_.apply(f_, x_);
+    for (size_t i = 0; i < f_.size(); ++i) x[i] = x_[i];
+  }
+
+ private:
+  Hierarchy amg_;
+  mutable amgcl::backend::numa_vector<float> f_, x_;
+};
+
+// Eigen's compressed rows as amgcl's matrix, without a copy: BiCGStab's products in double.
+using MatrixView = amgcl::backend::crs<double, int, int>;
+MatrixView view(Eigen::SparseMatrix<double, Eigen::RowMajor, int>& M) {
+  MatrixView A;
+  A.nrows = A.ncols = size_t(M.rows());
+  A.nnz = size_t(M.nonZeros());
+  A.ptr = M.outerIndexPtr();
+  A.col = M.innerIndexPtr();
+  A.val = M.valuePtr();
+  A.own_data = false;
+  return A;
+}
 
 // Position of entry (row, col) in the value array of a compressed row-major matrix.
 int value_index(const Eigen::SparseMatrix<double, Eigen::RowMajor, int>& A, int row, int col) {
@@ -50,6 +81,12 @@ double relative_residual(const Eigen::SparseMatrix<double, Eigen::RowMajor, int>
   return scale > 0 ? r / scale : r;
 }
 }  // namespace
+
+struct LaplacianSolver::Transfers {
+  TransferRecord<Matrix32> record;
+};
+
+LaplacianSolver::~LaplacianSolver() = default;
 
 LaplacianSolver::LaplacianSolver(const DiskMesh& disk, const SolverOptions& options) : disk_(disk), options_(options) {
   const int n = int(disk.V.rows());
@@ -116,66 +153,73 @@ void LaplacianSolver::scatter(const Eigen::MatrixXd& x, Eigen::MatrixXd& uv) con
     if (unknown_[size_t(i)] >= 0) uv.row(i) = x.row(unknown_[size_t(i)]);
 }
 
-// u and v on one thread each: a hierarchy keeps per-level work vectors, so two concurrent solves
-// need two hierarchies; building both at once costs the wall time of one. Every pass builds its
-// own: an earlier pass's hierarchy, reused on later passes, needs more iterations at this
-// tolerance than its setup saves.
+// u and v on one thread each, with a hierarchy each (a hierarchy holds its cycle's work vectors),
+// the second a twin of the first that shares its fine matrix, transfer and coarse operators: two
+// threads cost the smoothers' and the coarsest level's set-up twice, not the hierarchy's memory.
 bool LaplacianSolver::solve_amg(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& x) {
   const int n = int(matrix_.rows());
-  const int* ptr = matrix_.outerIndexPtr();
-  const auto system = boost::make_tuple(
-      size_t(n), boost::make_iterator_range(ptr, ptr + n + 1),
-      boost::make_iterator_range(matrix_.innerIndexPtr(), matrix_.innerIndexPtr() + ptr[n]),
-      boost::make_iterator_range(matrix_.valuePtr(), matrix_.valuePtr() + ptr[n]));
-  AmgSolver::params prm;
-  prm.solver.tol = options_.tolerance;
-  prm.solver.maxiter = size_t(options_.max_iterations);
-  prm.precond.coarse_enough = kCoarseEnough;
-  double setup[2] = {0, 0}, solving[2] = {0, 0};
+  if (!transfers_) transfers_ = std::make_unique<Transfers>();
+  TransferRecord<Matrix32>& record = transfers_->record;
+  Hierarchy::params prm;
+  prm.coarse_enough = kCoarseEnough;
+  prm.coarsening.record = &record;
+  Krylov::params krylov_prm;
+  krylov_prm.tol = options_.tolerance;
+  krylov_prm.maxiter = size_t(options_.max_iterations);
+  const MatrixView A = view(matrix_);
+  const bool two = options_.threads >= 2;
+  std::unique_ptr<const Preconditioner> amg[2];
+  Clock::time_point start = Clock::now();
+  try {  // amgcl throws on a zero pivot or a breakdown; the direct solve takes over then
+    const auto fine = boost::make_shared<Matrix32>(A);
+    record.level = 0;
+    record.twin = false;
+    amg[0] = std::make_unique<const Preconditioner>(fine, prm);
+    if (two) {
+      record.level = 0;
+      record.twin = true;
+      amg[1] = std::make_unique<const Preconditioner>(fine, prm);
+    }
+  } catch (...) {
+    record.coarse.clear();
+    return false;
+  }
+  record.coarse.clear();  // the hierarchies hold them
+  report_.seconds_setup = seconds_since(start);
+  double solving[2] = {0, 0};
   size_t iterations[2] = {0, 0};
   bool failed[2] = {false, false};
-  auto solve_column = [&](int c, const AmgSolver* shared) {
-    try {  // amgcl throws on a zero pivot or a breakdown; the direct solve takes over then
-      Clock::time_point start = Clock::now();
-      std::unique_ptr<const AmgSolver> own;
-      if (!shared) own = std::make_unique<const AmgSolver>(system, prm);
-      setup[c] = seconds_since(start);
-      start = Clock::now();
-      std::vector<double> b(rhs.col(c).data(), rhs.col(c).data() + n), u(x.col(c).data(), x.col(c).data() + n);
+  auto solve_column = [&](int c) {
+    try {
+      const Clock::time_point column_start = Clock::now();
+      const Krylov krylov(size_t(n), krylov_prm);
+      // The columns in place (Eigen stores them contiguously): no copy of either.
+      const auto b = boost::make_iterator_range(rhs.col(c).data(), rhs.col(c).data() + n);
+      auto u = boost::make_iterator_range(x.col(c).data(), x.col(c).data() + n);
       double estimate = 0;
-      boost::tie(iterations[c], estimate) = (shared ? *shared : *own)(b, u);
-      std::copy(u.begin(), u.end(), x.col(c).data());
-      solving[c] = seconds_since(start);
+      boost::tie(iterations[c], estimate) = krylov(A, *amg[two ? c : 0], b, u);
+      solving[c] = seconds_since(column_start);
     } catch (...) {
       failed[c] = true;
     }
   };
-  bool one_after_the_other = options_.threads < 2;
-  if (one_after_the_other) {  // one hierarchy, u then v: half the setup
+  bool parallel = two;
+  if (two) {
     try {
-      const Clock::time_point start = Clock::now();
-      const AmgSolver amg(system, prm);
-      const double hierarchy = seconds_since(start);
-      solve_column(0, &amg);
-      solve_column(1, &amg);
-      setup[0] = hierarchy;
-    } catch (...) {
-      failed[0] = true;
-    }
-  } else {
-    try {
-      std::thread v_thread(solve_column, 1, nullptr);
-      solve_column(0, nullptr);
+      std::thread v_thread(solve_column, 1);
+      solve_column(0);
       v_thread.join();
     } catch (const std::system_error&) {  // no thread to be had: one after the other
-      one_after_the_other = true;
-      solve_column(0, nullptr);
-      solve_column(1, nullptr);
+      parallel = false;
+      solve_column(0);
+      solve_column(1);
     }
+  } else {
+    solve_column(0);
+    solve_column(1);
   }
   // Times of u and v add up when they were solved one after the other, not on two threads.
-  report_.seconds_setup = one_after_the_other ? setup[0] + setup[1] : std::max(setup[0], setup[1]);
-  report_.seconds_solve = one_after_the_other ? solving[0] + solving[1] : std::max(solving[0], solving[1]);
+  report_.seconds_solve = parallel ? std::max(solving[0], solving[1]) : solving[0] + solving[1];
   report_.iterations = int(std::max(iterations[0], iterations[1]));
   report_.relative_residual = std::max(relative_residual(matrix_, rhs.col(0), x.col(0)),
                                        relative_residual(matrix_, rhs.col(1), x.col(1)));

@@ -3,9 +3,10 @@
 // pass only refills the values.
 //
 // Two ways to solve it (SolverOptions in solver_options.h):
-// - Amg: algebraic multigrid (amgcl: smoothed aggregation, ILU(0) smoothing) preconditioning
-//   BiCGStab, warm-started from the previous pass's solution, u and v on two threads (or one
-//   after the other with one hierarchy, SolverOptions::threads). The matrix
+// - Amg: algebraic multigrid (amgcl: smoothed aggregation, Gauss-Seidel smoothing, in float)
+//   preconditioning BiCGStab (in double), warm-started from the previous pass's solution, u and v
+//   on two threads (or one after the other, SolverOptions::threads). One set of coarse operators
+//   serves both; a later pass rebuilds them from the values only (reused_coarsening.h). The matrix
 //   is an irreducibly diagonally dominant M-matrix for positive weights, the ideal case for AMG,
 //   and it needs no fill, so time and memory grow linearly with the mesh.
 // - Direct: UMFPACK's sparse LU (METIS ordering, AMD for small systems; symbolic analysis once).
@@ -16,6 +17,7 @@
 #include <Eigen/Core>
 #include <Eigen/Sparse>
 #include <Eigen/UmfPackSupport>
+#include <memory>
 #include <vector>
 
 #include "core/disk_mesh.h"
@@ -35,6 +37,7 @@ struct SolveReport {
 class LaplacianSolver {
  public:
   LaplacianSolver(const DiskMesh& disk, const SolverOptions& options);
+  ~LaplacianSolver();
 
   // weights: aligned with disk.ring; boundary_uv: rows follow disk.boundary. uv: on entry the
   // previous pass's solution (the AMG's starting guess) or empty; on return UV for every vertex
@@ -59,6 +62,8 @@ class LaplacianSolver {
   std::vector<int> diagonal_value_; // row -> index of its diagonal in valuePtr()
   Eigen::UmfPackLU<Eigen::SparseMatrix<double>> lu_;
   bool analyzed_ = false;
+  struct Transfers;                      // the multigrid's P and R per level, kept across passes
+  std::unique_ptr<Transfers> transfers_;
   SolveReport report_;
 };
 

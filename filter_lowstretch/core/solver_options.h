@@ -21,8 +21,9 @@ struct SolverOptions {
   // Smaller systems are solved directly: amgcl would solve them on one level by its own dense LU
   // (its coarse_enough, 3000), slower than UMFPACK.
   int amg_minimum_rows = 3000;
-  // Cores one solve may use: 2 solves u and v each on a thread with a hierarchy of its own; 1 builds
-  // one hierarchy and solves u then v (half the setup, for callers that keep the cores busy).
+  // Cores one solve may use: 2 solves u and v each on a thread (the second hierarchy a twin that
+  // shares the first's operators); 1 solves u then v with one hierarchy (for callers that keep the
+  // cores busy).
   int threads = 2;
 };
 
