@@ -64,9 +64,10 @@ Eigen::MatrixXd unit_box_of_used(const Eigen::MatrixXd& V, const Eigen::MatrixXi
   return scaled;
 }
 
-// The least efficiency the undone cuts keep.
-double min_efficiency(const ChartOptions& o) {
-  return o.fewer_seams ? std::min(o.min_efficiency, kTuning.fewer_seams_efficiency) : o.min_efficiency;
+// The least efficiency merged charts keep, given the unmerged atlas's.
+double least_efficiency(const ChartOptions& o, double unmerged) {
+  if (o.min_efficiency > 0) return o.min_efficiency;
+  return std::max(kTuning.merge_floor[o.fewer_seams], kTuning.merge_keeps[o.fewer_seams] * unmerged);
 }
 
 Error check_chart_options(const ChartOptions& o) {
@@ -243,10 +244,9 @@ Error cut_along_sharp_edges(AtlasSearch& s) {
 
 // Candidates: the best atlas's charts merged with their neighbours (merge_neighbours.h), further
 // and further (kTuning.merge_growths, then halving the first step that went too far), while the
-// atlas keeps options.min_efficiency and kTuning.merge_keeps of its own; the one with the
-// shortest seams replaces it. Whether one did.
+// atlas keeps the least efficiency; the one with the shortest seams replaces it. Whether one did.
 bool merge_for_shorter_seams(AtlasSearch& s) {
-  const double least = std::max(min_efficiency(s.options), kTuning.merge_keeps[s.options.fewer_seams] * texture_efficiency(s.result));
+  const double least = least_efficiency(s.options, texture_efficiency(s.result));
   if (s.result.error || s.cut.empty() || !(texture_efficiency(s.result) >= least)) return false;
   const ChartsResult unmerged = s.result;
   NeighbourMerging merging(std::move(s.cut), s.unit_V, s.F, opposite_half_edges(s.F), s.options);

@@ -8,6 +8,7 @@
 #include <limits>
 #include <vector>
 
+#include "atlas/base/tuning.h"
 #include "atlas/bound/merge_neighbours.h"
 #include "atlas/bound/split_until_bounded.h"
 #include "atlas/charts.h"
@@ -116,7 +117,7 @@ TEST(MergeNeighbours, TheAtlasKeepsTheLeastEfficiencyWithShorterSeams) {
     ASSERT_FALSE(cut.error) << message(cut.error);
     double seam = cut.seam_length;
     for (const bool fewer : {false, true}) {
-      options.min_efficiency = ChartOptions().min_efficiency;
+      options.min_efficiency = 0;  // the default: kTuning's floor and share of the unmerged atlas's
       options.fewer_seams = fewer;
       const ChartsResult r = parameterize_charts(m.V, m.F, options);
       ASSERT_FALSE(r.error) << message(r.error);
@@ -124,12 +125,38 @@ TEST(MergeNeighbours, TheAtlasKeepsTheLeastEfficiencyWithShorterSeams) {
       EXPECT_LE(r.seam_length, seam);
       if (r.charts.size() < cut.charts.size()) {
         ++merged;
-        EXPECT_GE(texture_efficiency(r), fewer ? 0.5 : options.min_efficiency);
+        EXPECT_GE(texture_efficiency(r), kTuning.merge_floor[fewer]);
       }
       seam = r.seam_length;
     }
   }
   EXPECT_GT(merged, 0) << "some atlas had charts merged";
+}
+
+TEST(MergeNeighbours, AGivenLeastEfficiencyIsKeptAndLowerMergesMore) {
+  int merged = 0;
+  for (const testmesh::Mesh& m : {testmesh::sphere_with_bump(), testmesh::torus(32, 16), testmesh::ball_with_arms()}) {
+    ChartOptions options;
+    options.non_disk = NonDisk::Atlas;
+    size_t unmerged = 0, charts = std::numeric_limits<size_t>::max();
+    double seam = std::numeric_limits<double>::infinity();
+    for (const double least : {1.0, 0.6, 0.5, 0.4}) {
+      options.min_efficiency = least;
+      const ChartsResult r = parameterize_charts(m.V, m.F, options);
+      ASSERT_FALSE(r.error) << message(r.error);
+      expect_valid_layout(m.F, r, &m.V);
+      if (least == 1.0) unmerged = r.charts.size();
+      if (r.charts.size() < unmerged) {
+        ++merged;
+        EXPECT_GE(texture_efficiency(r), least);
+      }
+      EXPECT_LE(r.charts.size(), charts);
+      EXPECT_LE(r.seam_length, seam);
+      charts = r.charts.size();
+      seam = r.seam_length;
+    }
+  }
+  EXPECT_GT(merged, 1) << "some atlases had charts merged";
 }
 
 TEST(MergeNeighbours, LeastEfficiencyOutOfRangeIsRefusedByName) {

@@ -32,10 +32,10 @@ struct ChartOptions {
   // per doubling of its L2 stretch over max_stretch, at most this often (0: every part is mapped
   // before it is cut, which is slower and gives the same atlas).
   int most_cuts_ahead = 4;             // 0 to 16
-  // Then cuts are undone, those that save the most seam for the texture they cost first, while
-  // the atlas keeps this texture efficiency (coverage / L2^2); 1 undoes none. fewer_seams: at most
-  // AtlasTuning::fewer_seams_efficiency.
-  double min_efficiency = 0.61;        // 0 to 1
+  // Then neighbouring charts are merged for shorter seams while the atlas keeps this texture
+  // efficiency (coverage / L2^2); 1 merges none. 0: AtlasTuning::merge_floor and merge_keeps of the
+  // unmerged atlas's, by default or with fewer_seams.
+  double min_efficiency = 0;           // 0 to 1
   bool fewer_seams = false;
 };
 

@@ -111,9 +111,13 @@ struct AtlasTuning {
   // (a merge of two large charts can cost much more than the step's growth).
   double merge_growths[7] = {0.01, 0.02, 0.05, 0.1, 0.2, 0.4, 1};
   int merge_halvings = 3;
-  // The share of the atlas's efficiency (with small charts in empty texels) that merging keeps at
-  // least, by default and with fewer_seams: a CAD part's flat charts fill their boxes far better
-  // than the peers', and merging them across its edges gives much of that away.
+  // Unless options.min_efficiency is set, merged charts keep at least merge_floor and merge_keeps
+  // of the unmerged atlas's efficiency (with its small charts in empty texels), by default and with
+  // fewer_seams. 0.61: at least the peers' on the atlas table's statues and scans (tests/bench);
+  // 90%: a CAD part's flat charts fill their boxes far better than the peers', and merging them
+  // across its edges would give much of that away. Fewer seams: about UVAtlas's efficiency (which
+  // has a third to a half of the default atlas's seams).
+  double merge_floor[2] = {0.61, 0.5};
   double merge_keeps[2] = {0.9, 0.75};
   // A step of merging is laid out unless the efficiency, falling as the cost grows, would end this
   // far below the least: the layout falls less than the cost grows (the guests fill more texels).
@@ -121,10 +125,6 @@ struct AtlasTuning {
   // Unions to merge are mapped this many at a time, on all threads: a few more maps than one at a
   // time would make, in less time.
   int merges_mapped_together = 8;
-  // The least efficiency of --fewer-seams: about UVAtlas's (which has a third to a half of the
-  // default atlas's seams); lower floors matched UVAtlas on both counts on fewer meshes of the atlas
-  // table (tests/bench/README.md).
-  double fewer_seams_efficiency = 0.5;
 
   // --- Choosing among atlases (charts.cpp) ---
   // An atlas this much more efficient than one chart per part could be skips laying that out.
