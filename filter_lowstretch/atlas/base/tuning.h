@@ -122,6 +122,11 @@ struct AtlasTuning {
   // A step of merging is laid out unless the efficiency, falling as the cost grows, would end this
   // far below the least: the layout falls less than the cost grows (the guests fill more texels).
   double merge_step_may_fall = 0.95;
+  // Merging maps unions of at most this many times the mesh's faces in all, or least_merge_work
+  // faces if that is more: the first merges, of small charts, save the most seam for their work;
+  // the last, of large ones, cost the most time, which a small mesh can afford.
+  double merge_work = 3;
+  double least_merge_work = 500000;
   // Unions to merge are mapped this many at a time, on all threads: a few more maps than one at a
   // time would make, in less time.
   int merges_mapped_together = 8;

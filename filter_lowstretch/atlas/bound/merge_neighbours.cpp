@@ -29,6 +29,7 @@ NeighbourMerging::NeighbourMerging(std::vector<SolvedChart> charts, const Eigen:
     if (!alive_.back()) continue;
     before_ += texture_cost(charts[c]);
     for (const int f : charts[c].faces) piece[size_t(f)] = int(c);
+    faces_ += charts[c].faces.size();
   }
   cost_ = before_;
   pieces_ = std::move(charts);
@@ -59,6 +60,7 @@ void NeighbourMerging::map(Candidate& c, std::vector<int>& local_of) {
   c.joined.faces.resize(fa.size() + fb.size());
   std::merge(fa.begin(), fa.end(), fb.begin(), fb.end(), c.joined.faces.begin());
   c.mapped = true;
+  mapped_faces_ += c.joined.faces.size();
   if (local_of.empty()) local_of.assign(size_t(unit_V_.rows()), -1);
   if (make_chart_mesh(unit_V_, F_, c.joined.faces, local_of, c.joined.mesh)) return;
   solve_chart(c.joined, deciding_, 0);  // onto its own rectangle: a square rarely pays for a second solve
@@ -108,6 +110,7 @@ void NeighbourMerging::merge_within(double growth) {
       continue;
     }
     if (!c.mapped) {  // it and the unmapped ones after it, a few at a time on both cores
+      if (double(mapped_faces_) > std::max(kTuning.merge_work * double(faces_), kTuning.least_merge_work)) return;
       std::vector<size_t> batch;
       while (!queue_.empty() && batch.size() < size_t(kTuning.merges_mapped_together)) {
         const Candidate& next = candidates_[queue_.top().second];

@@ -54,6 +54,7 @@ class NeighbourMerging {
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue_;
   std::vector<std::vector<int>> local_of_;  // make_chart_mesh's scratch, per worker
   double before_ = 0, cost_ = 0;
+  size_t faces_ = 0, mapped_faces_ = 0;  // of the charts; of the unions mapped so far
 };
 
 }  // namespace lowstretch
