@@ -125,8 +125,8 @@ struct AtlasTuning {
   // Merging maps unions of at most this many times the mesh's faces in all, or least_merge_work
   // faces if that is more: the first merges, of small charts, save the most seam for their work;
   // the last, of large ones, cost the most time, which a small mesh can afford.
-  double merge_work = 3;
-  double least_merge_work = 500000;
+  double merge_work = 2;
+  double least_merge_work = 200000;
   // Unions to merge are mapped this many at a time, on all threads: a few more maps than one at a
   // time would make, in less time.
   int merges_mapped_together = 8;
