@@ -60,7 +60,6 @@ void NeighbourMerging::map(Candidate& c, std::vector<int>& local_of) {
   c.joined.faces.resize(fa.size() + fb.size());
   std::merge(fa.begin(), fa.end(), fb.begin(), fb.end(), c.joined.faces.begin());
   c.mapped = true;
-  mapped_faces_ += c.joined.faces.size();
   if (local_of.empty()) local_of.assign(size_t(unit_V_.rows()), -1);
   if (make_chart_mesh(unit_V_, F_, c.joined.faces, local_of, c.joined.mesh)) return;
   solve_chart(c.joined, deciding_, 0);  // onto its own rectangle: a square rarely pays for a second solve
@@ -119,6 +118,7 @@ void NeighbourMerging::merge_within(double growth) {
         queue_.pop();
       }
       for_each_index(int(batch.size()), [&](int j, int worker) { map(candidates_[batch[size_t(j)]], local_of_[size_t(worker)]); });
+      for (const size_t j : batch) mapped_faces_ += candidates_[j].joined.faces.size();  // here, not on the workers
       for (const size_t j : batch)
         if (candidates_[j].valid) queue_.emplace(extra_cost(candidates_[j]) / candidates_[j].seam, j);
       continue;
