@@ -167,8 +167,10 @@ struct AtlasSearch {
   // to leave texels empty: small charts are put into them on the best atlas only (filling every
   // candidate can find a better one, but costs much more time).
   std::vector<SolvedChart> kept, tried;
-  // The best atlas's charts as cut, before any was mapped free: merging starts from them.
+  // The best atlas's charts as cut, before any was mapped free: merging starts from them, and
+  // frees charts at the same cut_must_pay.
   std::vector<SolvedChart> cut;
+  double cut_must_pay = kTuning.free_must_pay;
 
   AtlasSearch(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options)
       : V(V), F(F), options(options), reporting(options) {
@@ -231,6 +233,7 @@ Error cut_along_sharp_edges(AtlasSearch& s) {
       s.made = true;
       s.kept = std::move(s.tried);
       s.cut = by_faces_leaves;
+      s.cut_must_pay = must_pay;
       s.notes.resize(s.common_notes);  // the cut's notes go with its atlas
       s.notes.insert(s.notes.end(), by_faces_notes.begin(), by_faces_notes.end());
       s.notes.push_back("charts cut along the sharp edges (a model made of faces; normals more than " +
@@ -242,9 +245,34 @@ Error cut_along_sharp_edges(AtlasSearch& s) {
   return {};
 }
 
+// `tiled` with small charts put into the texels its tiling leaves empty (kGuestChoices), where
+// that uses the texture better; `kept`: its charts, if its tiling was expected to leave room.
+void fill_empty_texels(const AtlasSearch& s, const std::vector<SolvedChart>& kept, ChartsResult& tiled) {
+  if (kept.empty() || !(tiled.coverage < 1 - kTuning.least_empty_share)) return;
+  const double tiled_efficiency = texture_efficiency(tiled);
+  std::vector<SolvedChart> flat_seen;
+  for (const GuestChoice& choice : kGuestChoices) {
+    if (choice.flat_seen_along_normal && flat_seen.empty()) {
+      flat_seen = kept;
+      see_flat_charts_along_normal(flat_seen);
+    }
+    const std::vector<SolvedChart>& charts = choice.flat_seen_along_normal ? flat_seen : kept;
+    const std::vector<int> guests = charts_to_put_in_empty_texels(charts, cell_areas(charts), choice);
+    if (guests.empty()) continue;
+    ChartsResult nested = atlas_of(charts, guests, s.unit_V, s.F, s.unit, int(s.V.rows()), s.options);
+    if (nested.error || !(texture_efficiency(nested) > texture_efficiency(tiled))) continue;
+    nested.notes.push_back(std::string("with small charts in empty texels") +
+                           (choice.flat_seen_along_normal ? " and flat charts as seen along their normal" : "") +
+                           " the atlas has efficiency " + number_text(texture_efficiency(nested)) + " (coverage / L2^2) against " +
+                           number_text(tiled_efficiency));
+    tiled = std::move(nested);
+  }
+}
+
 // Candidates: the best atlas's charts merged with their neighbours (merge_neighbours.h), further
-// and further (kTuning.merge_growths, then halving the first step that went too far), while the
-// atlas keeps the least efficiency; the one with the shortest seams replaces it. Whether one did.
+// and further (kTuning.merge_growths, past kTuning.merge_misses steps that fall too far, then
+// halving the first step that went too far after the last good one), while the atlas keeps the
+// least efficiency; the one with the shortest seams replaces it. Whether one did.
 bool merge_for_shorter_seams(AtlasSearch& s) {
   const double least = least_efficiency(s.options, texture_efficiency(s.result));
   if (s.result.error || s.cut.empty() || !(texture_efficiency(s.result) >= least)) return false;
@@ -253,8 +281,9 @@ bool merge_for_shorter_seams(AtlasSearch& s) {
   // Whether the first `merges` merges keep the least efficiency; the atlas with the shortest seams is kept.
   const auto keeps_least = [&](size_t merges) {
     std::vector<SolvedChart> charts = merging.charts_after(merges);
-    free_the_charts_that_stretch(charts, s.options);
+    free_the_charts_that_stretch(charts, s.options, s.cut_must_pay);
     ChartsResult merged = s.tile(std::move(charts));
+    if (!merged.error) fill_empty_texels(s, s.tried, merged);  // as the unmerged atlas was measured
     if (merged.error || !(texture_efficiency(merged) >= least)) return false;
     if (merged.seam_length < s.result.seam_length) {
       s.result = std::move(merged);
@@ -262,20 +291,19 @@ bool merge_for_shorter_seams(AtlasSearch& s) {
     }
     return true;
   };
-  size_t good = 0, bad = 0;
-  double reached = texture_efficiency(unmerged), at = 1;  // the last good layout's efficiency, at that growth
+  size_t good = 0, bad = 0;  // bad: the first step that failed after the last good one, if any
+  int misses = 0;
   for (const double growth : kTuning.merge_growths) {
-    // The efficiency falls about as the cost grows: a step bound to end far below the least is not made.
-    if (reached * at / (1 + growth) < kTuning.merge_step_may_fall * least) break;
     merging.merge_within(1 + growth);
-    if (merging.merges() == good) continue;
+    if (merging.merges() == good || merging.merges() == bad) continue;
     if (!keeps_least(merging.merges())) {
-      bad = merging.merges();
-      break;
+      if (bad == 0) bad = merging.merges();
+      if (++misses > kTuning.merge_misses) break;
+      continue;
     }
     good = merging.merges();
-    reached = texture_efficiency(s.result);
-    at = 1 + growth;
+    bad = 0;
+    misses = 0;
   }
   for (int halving = 0; halving < kTuning.merge_halvings && bad > good + 1; ++halving) {
     const size_t middle = (good + bad) / 2;
@@ -318,34 +346,11 @@ Error cut_by_stretch(AtlasSearch& s) {
     s.result = std::move(by_stretch);
     s.kept = std::move(by_stretch_kept);
     s.cut = std::move(unfreed);
+    s.cut_must_pay = kTuning.free_must_pay;
     s.notes = std::move(by_stretch_notes);
     s.made = true;
   }
   return {};
-}
-
-// Candidates: the best atlas with small charts put into the texels its tiling leaves empty
-// (kGuestChoices), kept where that uses the texture better.
-void put_small_charts_in_empty_texels(AtlasSearch& s) {
-  if (s.kept.empty() || !(s.result.coverage < 1 - kTuning.least_empty_share)) return;
-  const double tiled = texture_efficiency(s.result);
-  std::vector<SolvedChart> flat_seen;
-  for (const GuestChoice& choice : kGuestChoices) {
-    if (choice.flat_seen_along_normal && flat_seen.empty()) {
-      flat_seen = s.kept;
-      see_flat_charts_along_normal(flat_seen);
-    }
-    const std::vector<SolvedChart>& charts = choice.flat_seen_along_normal ? flat_seen : s.kept;
-    const std::vector<int> guests = charts_to_put_in_empty_texels(charts, cell_areas(charts), choice);
-    if (guests.empty()) continue;
-    ChartsResult nested = atlas_of(charts, guests, s.unit_V, s.F, s.unit, int(s.V.rows()), s.options);
-    if (nested.error || !(texture_efficiency(nested) > texture_efficiency(s.result))) continue;
-    nested.notes.push_back(std::string("with small charts in empty texels") +
-                           (choice.flat_seen_along_normal ? " and flat charts as seen along their normal" : "") +
-                           " the atlas has efficiency " + number_text(texture_efficiency(nested)) + " (coverage / L2^2) against " +
-                           number_text(tiled));
-    s.result = std::move(nested);
-  }
 }
 
 // Any mesh as charts. The candidates, in order, the best kept:
@@ -354,7 +359,8 @@ void put_small_charts_in_empty_texels(AtlasSearch& s) {
 // 2. otherwise, or if those failed: its components cut by stretch (or whole);
 // 3. a model made of faces whose kept atlas still has charts above the bound: also between sharp
 //    edges (parts that met the bound while deciding may stretch more in their cells);
-// 4. the best of them with small charts in the texels its tiling leaves empty.
+// 4. the best of them with small charts in the texels its tiling leaves empty;
+// 5. that atlas with charts merged for shorter seams, each step measured the same way.
 ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options) {
   AtlasSearch s(V, F, options);
   if (Error e = start_search(s)) return failed_result(e);
@@ -366,8 +372,8 @@ ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, cons
   const bool above = std::any_of(s.result.charts.begin(), s.result.charts.end(), [](const Chart& c) { return c.above_bound; });
   if (s.made_of_faces && !only_sharp_edges && above)
     if (Error e = cut_along_sharp_edges(s)) return failed_result(e);
-  put_small_charts_in_empty_texels(s);
-  if (merge_for_shorter_seams(s)) put_small_charts_in_empty_texels(s);
+  fill_empty_texels(s, s.kept, s.result);
+  merge_for_shorter_seams(s);
   s.result.notes.insert(s.result.notes.begin(), s.notes.begin(), s.notes.end());
   return std::move(s.result);
 }

@@ -16,6 +16,14 @@ ChartsResult bounded_atlas(const testmesh::Mesh& m, double max_stretch, int max_
   return parameterize_charts(m.V, m.F, options);
 }
 
+ChartsResult unmerged_atlas(const testmesh::Mesh& m, double max_stretch) {
+  ChartOptions options;
+  options.non_disk = NonDisk::Atlas;
+  options.max_stretch = max_stretch;
+  options.min_efficiency = 1;
+  return parameterize_charts(m.V, m.F, options);
+}
+
 ChartsResult fine_charts_of(const testmesh::Mesh& m, double max_stretch) {
   ChartOptions options;
   options.non_disk = NonDisk::Charts;

@@ -133,7 +133,7 @@ TEST(EmptyTexels, ChartsOfAnyShapeGoIntoEmptyTexelsByTheirOutline) {
   testmesh::Mesh m = testmesh::plate_with_hole(8, 1.0 / 8);
   for (int i = 0; i < 8; ++i)
     m = testmesh::joined(m, testmesh::punched_grid(8, {Eigen::RowVector2d(0.5, 0.5)}, 0.2), 0.2, Eigen::RowVector3d(3 + i, 0, 0));
-  const ChartsResult r = bounded_atlas(m, 1.5);
+  const ChartsResult r = unmerged_atlas(m, 1.5);
   expect_valid_layout(m.F, r);
   int holed_inside_top = 0;
   for (const size_t c : charts_inside_the_box_of_face_0(m, r)) holed_inside_top += r.charts[c].closed_holes > 0;

@@ -54,7 +54,7 @@ TEST(FreeCharts, SliverWithNoGoodRectangleKeepsItsOwnShape) {
 TEST(FreeCharts, FlatFaceWithAHoleKeepsItsShape) {
   const int n = 8, top_faces = 2 * n * n - 2 * (n / 2) * (n / 2);
   const testmesh::Mesh m = testmesh::plate_with_hole(n, 1.0 / n);
-  const ChartsResult r = bounded_atlas(m, 1.5);
+  const ChartsResult r = unmerged_atlas(m, 1.5);
   expect_valid_layout(m.F, r);
   const auto linear_map = [&](int f) {  // from the face's (x, y) to its UV
     Eigen::Matrix2d xy, uv;

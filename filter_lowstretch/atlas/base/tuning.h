@@ -109,24 +109,27 @@ struct AtlasTuning {
   // How far the charts' texture cost grows, step by step, as they are merged: each step is laid out
   // and measured. The first step that falls below the least efficiency is halved this many times
   // (a merge of two large charts can cost much more than the step's growth).
-  double merge_growths[7] = {0.01, 0.02, 0.05, 0.1, 0.2, 0.4, 1};
+  double merge_growths[9] = {0.01, 0.02, 0.05, 0.1, 0.2, 0.4, 1, 2, 4};
   int merge_halvings = 3;
+  // Steps that fall below the least efficiency, in a row, before merging stops: the rectangle
+  // layout of a step can fall far (a cell of the wrong shape squeezes a chart) where the next
+  // step's layout does not.
+  int merge_misses = 1;
   // Unless options.min_efficiency is set, merged charts keep at least merge_floor and merge_keeps
   // of the unmerged atlas's efficiency (with its small charts in empty texels), by default and with
   // fewer_seams. 0.61: at least the peers' on the atlas table's statues and scans (tests/bench);
   // 90%: a CAD part's flat charts fill their boxes far better than the peers', and merging them
   // across its edges would give much of that away. Fewer seams: about UVAtlas's efficiency (which
-  // has a third to a half of the default atlas's seams).
-  double merge_floor[2] = {0.61, 0.5};
+  // has a third to a half of the default atlas's seams): 0.55 dominated UVAtlas on more of the table
+  // than 0.5 or 0.57.
+  double merge_floor[2] = {0.61, 0.55};
   double merge_keeps[2] = {0.9, 0.75};
-  // A step of merging is laid out unless the efficiency, falling as the cost grows, would end this
-  // far below the least: the layout falls less than the cost grows (the guests fill more texels).
-  double merge_step_may_fall = 0.95;
   // Merging maps unions of at most this many times the mesh's faces in all, or least_merge_work
-  // faces if that is more: the first merges, of small charts, save the most seam for their work;
-  // the last, of large ones, cost the most time, which a small mesh can afford.
-  double merge_work = 2;
-  double least_merge_work = 200000;
+  // faces if that is more, by default and with fewer_seams: the first merges, of small charts, save
+  // the most seam for their work; the last, of large ones, cost the most time, which a small mesh
+  // can afford, and which fewer seams are worth.
+  double merge_work[2] = {2, 8};
+  double least_merge_work[2] = {200000, 800000};
   // Unions to merge are mapped this many at a time, on all threads: a few more maps than one at a
   // time would make, in less time.
   int merges_mapped_together = 8;

@@ -32,6 +32,7 @@ NeighbourMerging::NeighbourMerging(std::vector<SolvedChart> charts, const Eigen:
     faces_ += charts[c].faces.size();
   }
   cost_ = before_;
+  most_mapped_faces_ = std::max(kTuning.merge_work[options.fewer_seams] * double(faces_), kTuning.least_merge_work[options.fewer_seams]);
   pieces_ = std::move(charts);
   seam_with_.resize(pieces_.size());
   for (size_t h = 0; h < twin.size(); ++h) {
@@ -109,7 +110,7 @@ void NeighbourMerging::merge_within(double growth) {
       continue;
     }
     if (!c.mapped) {  // it and the unmapped ones after it, a few at a time on both cores
-      if (double(mapped_faces_) > std::max(kTuning.merge_work * double(faces_), kTuning.least_merge_work)) return;
+      if (double(mapped_faces_) > most_mapped_faces_) return;
       std::vector<size_t> batch;
       while (!queue_.empty() && batch.size() < size_t(kTuning.merges_mapped_together)) {
         const Candidate& next = candidates_[queue_.top().second];

@@ -55,6 +55,7 @@ class NeighbourMerging {
   std::vector<std::vector<int>> local_of_;  // make_chart_mesh's scratch, per worker
   double before_ = 0, cost_ = 0;
   size_t faces_ = 0, mapped_faces_ = 0;  // of the charts; of the unions mapped so far
+  double most_mapped_faces_ = 0;         // merging stops there (kTuning.merge_work)
 };
 
 }  // namespace lowstretch
