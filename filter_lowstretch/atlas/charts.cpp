@@ -163,9 +163,10 @@ struct AtlasSearch {
   size_t common_notes = 0;  // notes of every candidate; those after them are the best one's
   ChartsResult result;      // the best atlas so far
   bool made = false;        // whether `result` holds an atlas yet
-  // Each candidate is tiled; the charts of the best one are kept too when its tiling is expected
-  // to leave texels empty: small charts are put into them on the best atlas only (filling every
-  // candidate can find a better one, but costs much more time).
+  // Each candidate is tiled; the charts of the best one are kept too, as they were before the
+  // tiling: small charts are put into the texels it leaves empty, and every chart is packed by its
+  // outline, on the best atlas only (doing so on every candidate can find a better one, but costs
+  // much more time).
   std::vector<SolvedChart> kept, tried;
   // The best atlas's charts as cut, before any was mapped free: merging starts from them, and
   // frees charts at the same cut_must_pay.
@@ -184,8 +185,7 @@ struct AtlasSearch {
   AtlasSearch& operator=(const AtlasSearch&) = delete;
 
   ChartsResult tile(std::vector<SolvedChart> charts) {
-    const bool leaves_room = expected_empty_share(charts, cell_areas(charts)) >= kTuning.least_empty_share;
-    tried = leaves_room ? charts : std::vector<SolvedChart>();
+    tried = charts;
     return atlas_of(std::move(charts), {}, unit_V, F, unit, int(V.rows()), options);
   }
 };
@@ -246,9 +246,12 @@ Error cut_along_sharp_edges(AtlasSearch& s) {
 }
 
 // `tiled` with small charts put into the texels its tiling leaves empty (kGuestChoices), where
-// that uses the texture better; `kept`: its charts, if its tiling was expected to leave room.
+// that uses the texture better; `kept`: its charts. Only where the tiling was expected to leave
+// room and did.
 void fill_empty_texels(const AtlasSearch& s, const std::vector<SolvedChart>& kept, ChartsResult& tiled) {
-  if (kept.empty() || !(tiled.coverage < 1 - kTuning.least_empty_share)) return;
+  if (kept.empty() || !(tiled.coverage < 1 - kTuning.least_empty_share) ||
+      expected_empty_share(kept, cell_areas(kept)) < kTuning.least_empty_share)
+    return;
   const double tiled_efficiency = texture_efficiency(tiled);
   std::vector<SolvedChart> flat_seen;
   for (const GuestChoice& choice : kGuestChoices) {
@@ -353,6 +356,30 @@ Error cut_by_stretch(AtlasSearch& s) {
   return {};
 }
 
+// Candidate: the best atlas's charts, each on its own rectangle (or free), packed by their
+// outlines instead of tiled (pack_by_outline); also with its flat charts as seen along their normal,
+// if it has any. Kept where that uses the texture better.
+void pack_every_chart_by_outline(AtlasSearch& s) {
+  if (s.kept.empty()) return;
+  std::vector<int> all(s.kept.size());
+  std::iota(all.begin(), all.end(), 0);
+  std::vector<SolvedChart> flat_seen = s.kept;
+  see_flat_charts_along_normal(flat_seen);
+  const auto free_charts = [](const std::vector<SolvedChart>& charts) {
+    return std::count_if(charts.begin(), charts.end(), [](const SolvedChart& c) { return c.free_boundary; });
+  };
+  const bool any_flat = free_charts(flat_seen) > free_charts(s.kept);
+  for (const bool flat : {false, true}) {
+    if (flat && !any_flat) continue;
+    ChartsResult packed = atlas_of(flat ? std::move(flat_seen) : s.kept, all, s.unit_V, s.F, s.unit, int(s.V.rows()), s.options);
+    if (packed.error || !(texture_efficiency(packed) > texture_efficiency(s.result))) continue;
+    packed.notes.push_back(std::string("every chart packed by its outline") + (flat ? ", flat charts as seen along their normal" : "") +
+                           ": efficiency " + number_text(texture_efficiency(packed)) + " (coverage / L2^2) against " +
+                           number_text(texture_efficiency(s.result)) + " tiled");
+    s.result = std::move(packed);
+  }
+}
+
 // Any mesh as charts. The candidates, in order, the best kept:
 // 1. a model made of faces (a CAD part) whose parts, mapped whole, are above the bound: its
 //    charts between sharp edges only (cutting such a model by stretch loses to them, and costs time);
@@ -360,7 +387,8 @@ Error cut_by_stretch(AtlasSearch& s) {
 // 3. a model made of faces whose kept atlas still has charts above the bound: also between sharp
 //    edges (parts that met the bound while deciding may stretch more in their cells);
 // 4. the best of them with small charts in the texels its tiling leaves empty;
-// 5. that atlas with charts merged for shorter seams, each step measured the same way.
+// 5. that atlas with charts merged for shorter seams, each step measured the same way;
+// 6. the charts of the best of them packed by their outlines instead of tiled.
 ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options) {
   AtlasSearch s(V, F, options);
   if (Error e = start_search(s)) return failed_result(e);
@@ -374,6 +402,7 @@ ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, cons
     if (Error e = cut_along_sharp_edges(s)) return failed_result(e);
   fill_empty_texels(s, s.kept, s.result);
   merge_for_shorter_seams(s);
+  pack_every_chart_by_outline(s);
   s.result.notes.insert(s.result.notes.begin(), s.notes.begin(), s.notes.end());
   return std::move(s.result);
 }

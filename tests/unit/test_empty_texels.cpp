@@ -1,6 +1,6 @@
 // Small charts put into the texels a tiling leaves empty (atlas/pack/empty_texels.h): only into
 // texels no other chart covers, a gutter from every other chart and from the border, at the texel
-// density of the tiled charts.
+// density of the tiled charts; and every chart packed by its outline the same way.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -13,6 +13,7 @@
 
 #include "atlas/charts.h"
 #include "atlas/chart_map/solved_chart.h"
+#include "atlas/cut/mesh_components.h"
 #include "atlas/pack/empty_texels.h"
 #include "atlas/pack/lay_out_charts.h"
 #include "chart_fixtures.h"
@@ -231,4 +232,44 @@ TEST(EmptyTexels, GuestsAreTheSmallestChartsThatFitTheExpectedEmptyTexels) {
   // A share of the empty texels that holds only the smallest.
   EXPECT_EQ(charts_to_put_in_empty_texels(charts, own, {false, 0.02 / empty, false}), (std::vector<int>{2}));
   EXPECT_TRUE(charts_to_put_in_empty_texels(charts, own, {true, 0.005 / empty, false}).empty());
+}
+
+// Every chart packed by its outline on an empty grid (pack_by_outline): each placed whole, unturned
+// or turned by quarter turns (never mirrored), at one texel density, a gutter (in texels of the
+// stored layout) from every other chart, inside [0,1]^2; the densest packing covers more than half
+// of the texture.
+TEST(PackByOutline, EveryChartAtOneDensityAGutterApartInsideTheTexture) {
+  testmesh::Mesh m = testmesh::punched_grid(16, {{0.5, 0.5}}, 0.3);
+  const double scales[] = {0.6, 0.4, 0.25, 0.15, 0.1};
+  for (size_t i = 0; i < 5; ++i) m = testmesh::joined(m, testmesh::grid(4), scales[i], Eigen::RowVector3d(3 + 2 * double(i), 0, 0));
+  int count = 0;
+  const std::vector<int> component = face_components(m.F, count);
+  std::vector<std::vector<int>> faces(static_cast<size_t>(count));
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f) faces[size_t(component[size_t(f)])].push_back(int(f));
+  std::vector<SolvedChart> charts;
+  for (const std::vector<int>& part : faces) charts.push_back(solved_chart_of(m, part));
+  ChartOptions options;
+  ChartsResult r;
+  r.corner_uv = Eigen::MatrixXd::Constant(m.F.rows(), 6, -7);
+  r.face_chart.assign(size_t(m.F.rows()), -1);
+  ASSERT_TRUE(pack_by_outline(charts, options, r.corner_uv, r.face_chart));
+  std::vector<double> uv(charts.size(), 0), area(charts.size(), 0);
+  double covered = 0;
+  for (size_t c = 0; c < charts.size(); ++c)
+    for (const int f : charts[c].faces) {
+      ASSERT_EQ(r.face_chart[size_t(f)], int(c)) << "face " << f;
+      const Eigen::Vector2d p[3] = {corner(r, f, 0), corner(r, f, 1), corner(r, f, 2)};
+      for (const Eigen::Vector2d& q : p) EXPECT_TRUE(q.minCoeff() >= 0 && q.maxCoeff() <= 1) << "face " << f;
+      EXPECT_GT(signed_area(p[0], p[1], p[2]), 0) << "face " << f;
+      const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), d = m.V.row(m.F(f, 2));
+      area[c] += 0.5 * (b - a).cross(d - a).norm();
+      uv[c] += signed_area(p[0], p[1], p[2]);
+    }
+  for (size_t c = 0; c < charts.size(); ++c) {
+    EXPECT_NEAR((uv[c] / area[c]) / (uv[0] / area[0]), 1.0, 1e-6) << "chart " << c;
+    covered += uv[c];
+  }
+  EXPECT_GT(covered, 0.5);
+  const double texels = options.texture_size - 2 * options.gutter;  // per unit of the layout, once stored
+  EXPECT_GE(least_distance_between_charts(m.F, r) * texels, options.gutter * (1 - 1e-6));
 }

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <dirent.h>
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <string>
@@ -195,4 +196,7 @@ TEST(RealMeshes, CgalCadPartMergesChartsForShorterSeams) {
   EXPECT_LT(merged.charts.size(), cut.charts.size());
   EXPECT_LT(merged.seam_length, cut.seam_length);
   EXPECT_GE(texture_efficiency(merged), std::max(0.61, 0.9 * texture_efficiency(cut)));
+  // Its flat charts fill their outlines: packed by them, they use the texture better than tiled.
+  EXPECT_TRUE(std::any_of(merged.notes.begin(), merged.notes.end(),
+                          [](const std::string& n) { return n.find("packed by its outline") != std::string::npos; }));
 }

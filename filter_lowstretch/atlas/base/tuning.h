@@ -104,6 +104,11 @@ struct AtlasTuning {
   // Tries to put the guests into empty texels this many times, the guests without room going back
   // into the tiling each time (which makes every cell smaller, and so the room).
   int most_guest_rounds = 3;
+  // Packing every chart by its outline: the density is bisected this many times (each step
+  // narrows it to the square root of the ratio left: 2^(1/64), about 1%, after 6), after halving it
+  // at most most_packing_halvings times from where the charts would cover the whole texture.
+  int packing_bisections = 6;
+  int most_packing_halvings = 12;
 
   // --- Merging charts for shorter seams (bound/merge_neighbours, charts.cpp) ---
   // How far the charts' texture cost grows, step by step, as they are merged: each step is laid out

@@ -180,6 +180,27 @@ struct GridFrame {
   double offset = 0, scale = 1;
 };
 
+// The texture's grid, at most kTuning.most_grid_side cells a side.
+GridFrame grid_frame(const ChartOptions& options) {
+  GridFrame frame;
+  frame.side = std::min(options.texture_size, kTuning.most_grid_side);
+  const double texel = double(options.texture_size) / frame.side;  // texels per grid cell
+  frame.gutter = int(std::ceil(options.gutter / texel));
+  frame.offset = options.gutter / texel;
+  frame.scale = (options.texture_size - 2 * options.gutter) / texel;
+  return frame;
+}
+
+// Takes the border's gutter, and counts the free runs of every row.
+void take_border(const GridFrame& frame, TexelGrid& grid) {
+  const int side = frame.side, gutter = frame.gutter;
+  grid.take(0, 0, side, gutter);
+  grid.take(0, side - gutter, side, side);
+  grid.take(0, 0, gutter, side);
+  grid.take(side - gutter, 0, side, side);
+  grid.count_runs(0, side);
+}
+
 // Takes the cells of the tiled charts (not the guests), grown by the gutter, and the border's
 // gutter; returns their texel density, in grid cells^2 per unit of 3D area.
 double take_tiled_charts(const std::vector<SolvedChart>& charts, const std::vector<char>& is_guest,
@@ -196,13 +217,8 @@ double take_tiled_charts(const std::vector<SolvedChart>& charts, const std::vect
     }
   }
   // From here a taken cell is one a guest may not use.
-  const int side = frame.side, gutter = frame.gutter;
-  grid.grow(gutter);
-  grid.take(0, 0, side, gutter);
-  grid.take(0, side - gutter, side, side);
-  grid.take(0, 0, gutter, side);
-  grid.take(side - gutter, 0, side, side);
-  grid.count_runs(0, side);
+  grid.grow(frame.gutter);
+  take_border(frame, grid);
   return area_3d > 0 ? uv_area / area_3d : 0;
 }
 
@@ -265,42 +281,90 @@ std::vector<int> charts_to_put_in_empty_texels(const std::vector<SolvedChart>& c
   return guests;
 }
 
-std::vector<int> put_in_empty_texels(const std::vector<SolvedChart>& charts, const std::vector<int>& guests,
-                                     const ChartOptions& options, Eigen::MatrixXd& corner_uv, std::vector<int>& face_chart) {
-  GridFrame frame;
-  frame.side = std::min(options.texture_size, kTuning.most_grid_side);
-  const double texel = double(options.texture_size) / frame.side;  // texels per grid cell
-  frame.gutter = int(std::ceil(options.gutter / texel));
-  frame.offset = options.gutter / texel;
-  frame.scale = (options.texture_size - 2 * options.gutter) / texel;
-  std::vector<char> is_guest(charts.size(), 0);
-  for (const int i : guests) is_guest[size_t(i)] = 1;
-  TexelGrid grid(frame.side);
-  const double density = take_tiled_charts(charts, is_guest, corner_uv, frame, grid);
+namespace {
 
+// Places the charts of `order` at `density` (grid cells^2 per unit of 3D area) where each first
+// fits; those that find no room are returned, or, if `stop_at_first`, only the first of them.
+std::vector<int> place_in_order(const std::vector<SolvedChart>& charts, const std::vector<int>& order, double density,
+                                const GridFrame& frame, bool stop_at_first, TexelGrid& grid, Eigen::MatrixXd& corner_uv,
+                                std::vector<int>& face_chart) {
   std::vector<int> unplaced;
-  std::vector<int> order = guests;  // largest first: small boxes fill the room large ones leave
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    return charts[size_t(a)].kept.area_3d > charts[size_t(b)].kept.area_3d;
-  });
   for (const int g : order) {
     const SolvedChart& chart = charts[size_t(g)];
     const double own = chart.uv_area();
-    if (!(density > 0) || !(own > 0) || !(chart.box.sizes().minCoeff() > 0)) {
-      unplaced.push_back(g);
-      continue;
-    }
-    const Eigen::Vector2d size = chart.box.sizes() * std::sqrt(density * chart.kept.area_3d / own);  // in cells
     Outline best;
     int x = 0, y = 0;
-    // A sliver longer than the texture (or a degenerate map) has no room.
-    if (!(size.maxCoeff() <= grid.side()) || !find_place(grid, chart, size, frame.side, best, x, y)) {
+    bool placed = density > 0 && own > 0 && chart.box.sizes().minCoeff() > 0;
+    if (placed) {
+      const Eigen::Vector2d size = chart.box.sizes() * std::sqrt(density * chart.kept.area_3d / own);  // in cells
+      // A sliver longer than the texture (or a degenerate map) has no room.
+      placed = size.maxCoeff() <= grid.side() && find_place(grid, chart, size, frame.side, best, x, y);
+    }
+    if (!placed) {
       unplaced.push_back(g);
+      if (stop_at_first) break;
       continue;
     }
     place_guest(chart, g, best, x, y, frame, grid, corner_uv, face_chart);
   }
   return unplaced;
+}
+
+// Largest first: small charts fill the room large ones leave.
+std::vector<int> larger_first(const std::vector<SolvedChart>& charts, std::vector<int> order) {
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return charts[size_t(a)].kept.area_3d > charts[size_t(b)].kept.area_3d; });
+  return order;
+}
+
+}  // namespace
+
+std::vector<int> put_in_empty_texels(const std::vector<SolvedChart>& charts, const std::vector<int>& guests,
+                                     const ChartOptions& options, Eigen::MatrixXd& corner_uv, std::vector<int>& face_chart) {
+  const GridFrame frame = grid_frame(options);
+  std::vector<char> is_guest(charts.size(), 0);
+  for (const int i : guests) is_guest[size_t(i)] = 1;
+  TexelGrid grid(frame.side);
+  const double density = take_tiled_charts(charts, is_guest, corner_uv, frame, grid);
+  return place_in_order(charts, larger_first(charts, guests), density, frame, false, grid, corner_uv, face_chart);
+}
+
+bool pack_by_outline(const std::vector<SolvedChart>& charts, const ChartOptions& options, Eigen::MatrixXd& corner_uv,
+                     std::vector<int>& face_chart) {
+  const GridFrame frame = grid_frame(options);
+  TexelGrid empty(frame.side);
+  take_border(frame, empty);
+  std::vector<int> all(charts.size());
+  std::iota(all.begin(), all.end(), 0);
+  const std::vector<int> order = larger_first(charts, all);
+  double area_3d = 0;
+  for (const SolvedChart& c : charts) area_3d += c.kept.area_3d;
+  const double inside = frame.side - 2.0 * frame.gutter;
+  if (!(area_3d > 0) || !(inside > 0)) return false;
+  Eigen::MatrixXd best_uv;
+  std::vector<int> best_chart;
+  const auto fits = [&](double density) {
+    TexelGrid grid = empty;
+    if (!place_in_order(charts, order, density, frame, true, grid, corner_uv, face_chart).empty()) return false;
+    best_uv = corner_uv;
+    best_chart = face_chart;
+    return true;
+  };
+  // The densest layout the grid holds, found by bisection: at `high` the charts would cover every
+  // cell; halving the density until all fit, then narrowing down.
+  double high = inside * inside / area_3d, low = high / 2;
+  for (int halving = 0; !fits(low); ++halving) {
+    if (halving == kTuning.most_packing_halvings) return false;
+    high = low;
+    low /= 2;
+  }
+  for (int step = 0; step < kTuning.packing_bisections; ++step) {
+    const double middle = std::sqrt(low * high);
+    if (fits(middle)) low = middle;
+    else high = middle;
+  }
+  corner_uv = std::move(best_uv);
+  face_chart = std::move(best_chart);
+  return true;
 }
 
 }  // namespace lowstretch

@@ -156,6 +156,17 @@ Error lay_out(std::vector<SolvedChart>& charts, const ChartOptions& options, Eig
               const std::vector<int>& guests, ChartsResult& result) {
   std::vector<char> tiled(charts.size(), 1);
   for (const int i : guests) tiled[size_t(i)] = 0;
+  if (!charts.empty() && guests.size() == charts.size()) {  // no tiling: every chart by its outline
+    std::vector<char> turned;
+    fit_to_cells(charts, tiled, {}, options, turned);
+    for (const SolvedChart& c : charts)
+      if (c.map.error) return c.map.error;
+    result.corner_uv.resize(face_count, 6);
+    result.face_chart.assign(size_t(face_count), 0);
+    if (!pack_by_outline(charts, options, result.corner_uv, result.face_chart))
+      return {ErrorCode::ChartsNotPacked, static_cast<long long>(charts.size()), ""};
+    return {};
+  }
   for (int round = 0;; ++round) {
     std::vector<Eigen::AlignedBox2d> cells;
     std::vector<std::string> notes;
