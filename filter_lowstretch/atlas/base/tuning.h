@@ -130,9 +130,9 @@ struct AtlasTuning {
   double merge_floor[2] = {0.61, 0.55};
   double merge_keeps[2] = {0.9, 0.75};
   // Merging maps unions of at most this many times the mesh's faces in all, or least_merge_work
-  // faces if that is more, by default and with fewer_seams: the first merges, of small charts, save
-  // the most seam for their work; the last, of large ones, cost the most time, which a small mesh
-  // can afford, and which fewer seams are worth.
+  // faces if that is more, by default and with fewer_seams (or options.min_efficiency set): the
+  // first merges, of small charts, save the most seam for their work; the last, of large ones,
+  // cost the most time, which a small mesh can afford, and which fewer seams are worth.
   double merge_work[2] = {2, 8};
   double least_merge_work[2] = {200000, 800000};
   // Unions to merge are mapped this many at a time, on all threads: a few more maps than one at a

@@ -32,7 +32,9 @@ NeighbourMerging::NeighbourMerging(std::vector<SolvedChart> charts, const Eigen:
     faces_ += charts[c].faces.size();
   }
   cost_ = before_;
-  most_mapped_faces_ = std::max(kTuning.merge_work[options.fewer_seams] * double(faces_), kTuning.least_merge_work[options.fewer_seams]);
+  // A least efficiency of the user's own is a trade-off chosen as fewer_seams is: it may merge as far.
+  const bool further = options.fewer_seams || options.min_efficiency > 0;
+  most_mapped_faces_ = std::max(kTuning.merge_work[further] * double(faces_), kTuning.least_merge_work[further]);
   pieces_ = std::move(charts);
   seam_with_.resize(pieces_.size());
   for (size_t h = 0; h < twin.size(); ++h) {
