@@ -176,6 +176,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   lowstretch::ChartOptions chart_options;
   chart_options.disk = options;
   chart_options.non_disk = lowstretch::NonDisk::Charts;
+  chart_options.texture_size = 256;  // as fuzz_reader.h says why
   const lowstretch::ChartsResult c = lowstretch::parameterize_charts(V, F, chart_options);
   if (std::getenv("LOWSTRETCH_FUZZ_PRINT")) {
     std::printf("charts: error %s (%s), input is a disk %d, %d charts, uv in [%.17g, %.17g]\n", lowstretch::code_name(c.error.code),
