@@ -8,20 +8,26 @@
 
 namespace lowstretch {
 
-ChartsResult bounded_atlas(const testmesh::Mesh& m, double max_stretch, int max_charts) {
+namespace {
+
+// NonDisk::Atlas at a bound, a chart limit and a least efficiency for merging (1 merges none).
+ChartsResult atlas_with(const testmesh::Mesh& m, double max_stretch, int max_charts, double min_efficiency) {
   ChartOptions options;
   options.non_disk = NonDisk::Atlas;
   options.max_stretch = max_stretch;
   options.max_charts = max_charts;
+  options.min_efficiency = min_efficiency;
   return parameterize_charts(m.V, m.F, options);
 }
 
+}  // namespace
+
+ChartsResult bounded_atlas(const testmesh::Mesh& m, double max_stretch, int max_charts) {
+  return atlas_with(m, max_stretch, max_charts, ChartOptions().min_efficiency);
+}
+
 ChartsResult unmerged_atlas(const testmesh::Mesh& m, double max_stretch) {
-  ChartOptions options;
-  options.non_disk = NonDisk::Atlas;
-  options.max_stretch = max_stretch;
-  options.min_efficiency = 1;
-  return parameterize_charts(m.V, m.F, options);
+  return atlas_with(m, max_stretch, ChartOptions().max_charts, 1);
 }
 
 ChartsResult fine_charts_of(const testmesh::Mesh& m, double max_stretch) {

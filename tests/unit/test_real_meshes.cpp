@@ -139,18 +139,28 @@ TEST(RealMeshes, SharedParseErrorsAreRefusedByTheReader) {
   }
 }
 
+namespace {
+
+// CGAL's couplingdown (a CAD part) and its atlas keeping `min_efficiency` as it merges (1: none).
+void couplingdown_atlas(double min_efficiency, Eigen::MatrixXd& V, Eigen::MatrixXi& F, ChartsResult& r) {
+  std::string error;
+  ASSERT_TRUE(load(std::string(LOWSTRETCH_CGAL_DATA) + "/couplingdown.off", V, F, error)) << error;
+  ChartOptions options;
+  options.non_disk = NonDisk::Atlas;
+  options.min_efficiency = min_efficiency;
+  r = parameterize_charts(V, F, options);
+}
+
+}  // namespace
+
 // A CAD part whose large faces meet their fillets at gentle edges (CGAL's couplingdown): cut along
 // its edges sharper than 80 degrees, those faces and fillets stayed charts that stretch on their
 // rectangles (efficiency 0.556); cut along the edges sharper than 30 degrees as well, 0.643.
 TEST(RealMeshes, CgalCadPartIsAlsoCutAlongItsGentlerEdges) {
   Eigen::MatrixXd V;
   Eigen::MatrixXi F;
-  std::string error;
-  ASSERT_TRUE(load(std::string(LOWSTRETCH_CGAL_DATA) + "/couplingdown.off", V, F, error)) << error;
-  ChartOptions options;
-  options.non_disk = NonDisk::Atlas;
-  options.min_efficiency = 1;  // the charts as cut: merging joins some across those edges
-  const ChartsResult r = parameterize_charts(V, F, options);
+  ChartsResult r;
+  ASSERT_NO_FATAL_FAILURE(couplingdown_atlas(1, V, F, r));  // the charts as cut: merging joins some across those edges
   ASSERT_FALSE(r.error) << r.error.detail;
   expect_valid_layout(F, r);
   EXPECT_GT(texture_efficiency(r), 0.6);
@@ -183,14 +193,9 @@ TEST(RealMeshes, CgalCadPartIsAlsoCutAlongItsGentlerEdges) {
 TEST(RealMeshes, CgalCadPartMergesChartsForShorterSeams) {
   Eigen::MatrixXd V;
   Eigen::MatrixXi F;
-  std::string error;
-  ASSERT_TRUE(load(std::string(LOWSTRETCH_CGAL_DATA) + "/couplingdown.off", V, F, error)) << error;
-  ChartOptions options;
-  options.non_disk = NonDisk::Atlas;
-  options.min_efficiency = 1;
-  const ChartsResult cut = parameterize_charts(V, F, options);
-  options.min_efficiency = 0;
-  const ChartsResult merged = parameterize_charts(V, F, options);
+  ChartsResult cut, merged;
+  ASSERT_NO_FATAL_FAILURE(couplingdown_atlas(1, V, F, cut));
+  ASSERT_NO_FATAL_FAILURE(couplingdown_atlas(0, V, F, merged));
   ASSERT_FALSE(cut.error || merged.error);
   expect_valid_layout(F, merged);
   EXPECT_LT(merged.charts.size(), cut.charts.size());
