@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iterator>
 #include <numeric>
 #include <string>
 #include <utility>
@@ -272,34 +273,79 @@ void fill_empty_texels(const AtlasSearch& s, const std::vector<SolvedChart>& kep
   }
 }
 
-// Candidates: the best atlas's charts merged with their neighbours (merge_neighbours.h), further
-// and further (kTuning.merge_growths, past kTuning.merge_misses steps that fall too far, then
-// halving the first step that went too far after the last good one), while the atlas keeps the
-// least efficiency; the one with the shortest seams replaces it. Whether one did.
-bool merge_for_shorter_seams(AtlasSearch& s) {
-  const double least = least_efficiency(s.options, texture_efficiency(s.result));
-  if (s.result.error || s.cut.empty() || !(texture_efficiency(s.result) >= least)) return false;
-  const ChartsResult unmerged = s.result;
-  NeighbourMerging merging(std::move(s.cut), s.unit_V, s.F, opposite_half_edges(s.F), s.options);
-  // Whether the first `merges` merges keep the least efficiency; the atlas with the shortest seams is kept.
-  const auto keeps_least = [&](size_t merges) {
+// The charts packed by their outlines instead of tiled (pack_by_outline), each on its own
+// rectangle or free; also with the flat ones as seen along their normal, if any is: the better
+// of the two, or an error.
+ChartsResult packed_by_outline(const AtlasSearch& s, const std::vector<SolvedChart>& charts) {
+  std::vector<int> all(charts.size());
+  std::iota(all.begin(), all.end(), 0);
+  std::vector<SolvedChart> flat_seen = charts;
+  see_flat_charts_along_normal(flat_seen);
+  const auto free_charts = [](const std::vector<SolvedChart>& c) {
+    return std::count_if(c.begin(), c.end(), [](const SolvedChart& chart) { return chart.free_boundary; });
+  };
+  const bool any_flat = free_charts(flat_seen) > free_charts(charts);
+  ChartsResult packed = atlas_of(charts, all, s.unit_V, s.F, s.unit, int(s.V.rows()), s.options);
+  if (any_flat) {
+    ChartsResult flat = atlas_of(std::move(flat_seen), all, s.unit_V, s.F, s.unit, int(s.V.rows()), s.options);
+    if (!flat.error && (packed.error || texture_efficiency(flat) > texture_efficiency(packed))) {
+      flat.notes.push_back("flat charts as seen along their normal");
+      packed = std::move(flat);
+    }
+  }
+  return packed;
+}
+
+// `laid_out` (a tiling of `kept`) replaced by the same charts packed by outline where that uses
+// the texture better.
+void pack_by_outline_if_better(const AtlasSearch& s, const std::vector<SolvedChart>& kept, ChartsResult& laid_out) {
+  if (kept.empty() || laid_out.error) return;
+  ChartsResult packed = packed_by_outline(s, kept);
+  if (packed.error || !(texture_efficiency(packed) > texture_efficiency(laid_out))) return;
+  packed.notes.push_back("every chart packed by its outline: efficiency " + number_text(texture_efficiency(packed)) +
+                         " (coverage / L2^2) against " + number_text(texture_efficiency(laid_out)) + " tiled");
+  laid_out = std::move(packed);
+}
+
+// Merge steps of one NeighbourMerging, each laid out: tiled with small charts in empty texels, as
+// the unmerged atlas was measured, or (free unions, which tile badly) packed by outline. The step
+// with the shortest seams that keeps the least efficiency replaces the best atlas.
+struct MergeSteps {
+  AtlasSearch& s;
+  NeighbourMerging& merging;
+  double least;
+  bool by_outline;
+  // Whether the first `merges` merges keep the least efficiency.
+  bool keep_least(size_t merges) {
     std::vector<SolvedChart> charts = merging.charts_after(merges);
     free_the_charts_that_stretch(charts, s.options, s.cut_must_pay);
-    ChartsResult merged = s.tile(std::move(charts));
-    if (!merged.error) fill_empty_texels(s, s.tried, merged);  // as the unmerged atlas was measured
+    ChartsResult merged;
+    if (by_outline) {
+      s.tried = charts;
+      merged = packed_by_outline(s, charts);
+    } else {
+      merged = s.tile(std::move(charts));
+      if (!merged.error) fill_empty_texels(s, s.tried, merged);
+    }
     if (merged.error || !(texture_efficiency(merged) >= least)) return false;
     if (merged.seam_length < s.result.seam_length) {
       s.result = std::move(merged);
       s.kept = std::move(s.tried);
     }
     return true;
-  };
+  }
+};
+
+// Rectangle unions, further and further (kTuning.merge_growths, past kTuning.merge_misses steps
+// that fall too far, then halving the first step that went too far after the last good one).
+void merge_along_growths(MergeSteps& steps) {
+  NeighbourMerging& merging = steps.merging;
   size_t good = 0, bad = 0;  // bad: the first step that failed after the last good one, if any
   int misses = 0;
   for (const double growth : kTuning.merge_growths) {
     merging.merge_within(1 + growth);
     if (merging.merges() == good || merging.merges() == bad) continue;
-    if (!keeps_least(merging.merges())) {
+    if (!steps.keep_least(merging.merges())) {
       if (bad == 0) bad = merging.merges();
       if (++misses > kTuning.merge_misses) break;
       continue;
@@ -310,8 +356,40 @@ bool merge_for_shorter_seams(AtlasSearch& s) {
   }
   for (int halving = 0; halving < kTuning.merge_halvings && bad > good + 1; ++halving) {
     const size_t middle = (good + bad) / 2;
-    if (keeps_least(middle)) good = middle;
+    if (steps.keep_least(middle)) good = middle;
     else bad = middle;
+  }
+}
+
+// Free unions: a free union can cost less than its two pieces, so growth does not order the
+// steps; every merge within the largest growth is made, then their count is bisected.
+void merge_by_count(MergeSteps& steps) {
+  NeighbourMerging& merging = steps.merging;
+  merging.merge_within(1 + *(std::end(kTuning.merge_growths) - 1));
+  size_t good = 0, bad = merging.merges() + 1;
+  if (merging.merges() == 0 || steps.keep_least(merging.merges())) return;
+  for (int step = 0; step < kTuning.merge_count_bisections && bad > good + 1; ++step) {
+    const size_t middle = (good + bad) / 2;
+    if (steps.keep_least(middle)) good = middle;
+    else bad = middle;
+  }
+}
+
+// Candidates: the best atlas's charts merged with their neighbours (merge_neighbours.h), each union
+// on its own rectangle; with fewer_seams, also free (natural boundary) where that costs less,
+// packed by outline. The one with the shortest seams that keeps the least efficiency replaces the
+// best atlas. Whether one did.
+bool merge_for_shorter_seams(AtlasSearch& s) {
+  const double least = least_efficiency(s.options, texture_efficiency(s.result));
+  if (s.result.error || s.cut.empty() || !(texture_efficiency(s.result) >= least)) return false;
+  const ChartsResult unmerged = s.result;
+  const std::vector<int> twin = opposite_half_edges(s.F);
+  for (const bool free_unions : {false, true}) {
+    if (free_unions && !s.options.fewer_seams) continue;
+    NeighbourMerging merging(s.cut, s.unit_V, s.F, twin, s.options, free_unions);
+    MergeSteps steps{s, merging, least, free_unions};
+    if (free_unions) merge_by_count(steps);
+    else merge_along_growths(steps);
   }
   if (s.result.charts.size() >= unmerged.charts.size()) return false;
   s.notes.push_back(std::to_string(unmerged.charts.size() - s.result.charts.size()) + " charts merged for shorter seams (" +
@@ -356,30 +434,6 @@ Error cut_by_stretch(AtlasSearch& s) {
   return {};
 }
 
-// Candidate: the best atlas's charts, each on its own rectangle (or free), packed by their
-// outlines instead of tiled (pack_by_outline); also with its flat charts as seen along their normal,
-// if it has any. Kept where that uses the texture better.
-void pack_every_chart_by_outline(AtlasSearch& s) {
-  if (s.kept.empty()) return;
-  std::vector<int> all(s.kept.size());
-  std::iota(all.begin(), all.end(), 0);
-  std::vector<SolvedChart> flat_seen = s.kept;
-  see_flat_charts_along_normal(flat_seen);
-  const auto free_charts = [](const std::vector<SolvedChart>& charts) {
-    return std::count_if(charts.begin(), charts.end(), [](const SolvedChart& c) { return c.free_boundary; });
-  };
-  const bool any_flat = free_charts(flat_seen) > free_charts(s.kept);
-  for (const bool flat : {false, true}) {
-    if (flat && !any_flat) continue;
-    ChartsResult packed = atlas_of(flat ? std::move(flat_seen) : s.kept, all, s.unit_V, s.F, s.unit, int(s.V.rows()), s.options);
-    if (packed.error || !(texture_efficiency(packed) > texture_efficiency(s.result))) continue;
-    packed.notes.push_back(std::string("every chart packed by its outline") + (flat ? ", flat charts as seen along their normal" : "") +
-                           ": efficiency " + number_text(texture_efficiency(packed)) + " (coverage / L2^2) against " +
-                           number_text(texture_efficiency(s.result)) + " tiled");
-    s.result = std::move(packed);
-  }
-}
-
 // Any mesh as charts. The candidates, in order, the best kept:
 // 1. a model made of faces (a CAD part) whose parts, mapped whole, are above the bound: its
 //    charts between sharp edges only (cutting such a model by stretch loses to them, and costs time);
@@ -402,7 +456,7 @@ ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, cons
     if (Error e = cut_along_sharp_edges(s)) return failed_result(e);
   fill_empty_texels(s, s.kept, s.result);
   merge_for_shorter_seams(s);
-  pack_every_chart_by_outline(s);
+  pack_by_outline_if_better(s, s.kept, s.result);
   s.result.notes.insert(s.result.notes.begin(), s.notes.begin(), s.notes.end());
   return std::move(s.result);
 }

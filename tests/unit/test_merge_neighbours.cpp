@@ -9,7 +9,9 @@
 #include <vector>
 
 #include "atlas/base/tuning.h"
+#include "atlas/bound/deciding_map.h"
 #include "atlas/bound/merge_neighbours.h"
+#include "atlas/chart_map/boundary_crossing.h"
 #include "atlas/bound/split_until_bounded.h"
 #include "atlas/charts.h"
 #include "chart_fixtures.h"
@@ -168,4 +170,29 @@ TEST(MergeNeighbours, LeastEfficiencyOutOfRangeIsRefusedByName) {
     EXPECT_EQ(r.error.code, ErrorCode::InvalidOption);
     EXPECT_EQ(r.error.option, "min_efficiency") << message(r.error);
   }
+}
+
+TEST(MergeNeighbours, FreeUnionsAreKeptOnlyWhereTheyCostLessThanTheirRectangleAndDoNotCrossThemselves) {
+  int free = 0;
+  for (const testmesh::Mesh& m : {testmesh::sphere_with_bump(), testmesh::torus(32, 16), testmesh::ball_with_arms()}) {
+    const std::vector<int> twin = opposite_half_edges(m.F);
+    const std::vector<SolvedChart> charts = cut_charts(m, 1.05);
+    NeighbourMerging merging(charts, m.V, m.F, twin, ChartOptions(), true);
+    merging.merge_within(5);
+    const std::vector<SolvedChart> after = merging.charts_after(merging.merges());
+    const std::vector<int> chart = chart_of_faces(after, m.F.rows());
+    EXPECT_EQ(std::count(chart.begin(), chart.end(), -1), 0) << "every face is in a chart";
+    for (const SolvedChart& u : after) {
+      EXPECT_EQ(u.kept.flipped + u.kept.degenerate, 0);
+      if (!u.free_boundary) continue;  // the cut charts are on rectangles: a free chart is a union
+      ++free;
+      SolvedChart rectangle;  // the union as merging maps it onto its rectangle
+      rectangle.mesh = u.mesh;
+      rectangle.faces = u.faces;
+      solve_chart(rectangle, deciding_options(ChartOptions().disk), 0);
+      EXPECT_LT(texture_cost(u), texture_cost(rectangle)) << "a free union pays for itself";
+      EXPECT_FALSE(uv_boundary_crosses_itself(u.mesh.F.topRows(Eigen::Index(u.faces.size())), u.map.uv));
+    }
+  }
+  EXPECT_GT(free, 0) << "some unions are free";
 }

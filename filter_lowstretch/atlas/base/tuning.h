@@ -116,6 +116,9 @@ struct AtlasTuning {
   // (a merge of two large charts can cost much more than the step's growth).
   double merge_growths[9] = {0.01, 0.02, 0.05, 0.1, 0.2, 0.4, 1, 2, 4};
   int merge_halvings = 3;
+  // Free unions (fewer_seams) are merged all the way, then the count of merges bisected this many
+  // times: 2^7 steps resolve the last merges of a few hundred charts to one or two.
+  int merge_count_bisections = 7;
   // Steps that fall below the least efficiency, in a row, before merging stops: the rectangle
   // layout of a step can fall far (a cell of the wrong shape squeezes a chart) where the next
   // step's layout does not.

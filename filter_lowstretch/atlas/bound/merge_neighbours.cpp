@@ -5,6 +5,7 @@
 
 #include "atlas/base/tuning.h"
 #include "atlas/bound/deciding_map.h"
+#include "atlas/chart_map/boundary_crossing.h"
 #include "atlas/chart_map/chart_threads.h"
 
 namespace lowstretch {
@@ -18,8 +19,8 @@ bool has_valid_map(const SolvedChart& c) {
 }  // namespace
 
 NeighbourMerging::NeighbourMerging(std::vector<SolvedChart> charts, const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F,
-                                   const std::vector<int>& twin, const ChartOptions& options)
-    : unit_V_(unit_V), F_(F), deciding_(deciding_options(options.disk)), charts_(charts.size()),
+                                   const std::vector<int>& twin, const ChartOptions& options, bool free_unions)
+    : unit_V_(unit_V), F_(F), deciding_(deciding_options(options.disk)), free_unions_(free_unions), charts_(charts.size()),
       local_of_(size_t(kTuning.most_threads)) {
   std::vector<int> piece(size_t(F.rows()), -1);
   for (size_t c = 0; c < charts.size(); ++c) {
@@ -68,6 +69,16 @@ void NeighbourMerging::map(Candidate& c, std::vector<int>& local_of) {
   solve_chart(c.joined, deciding_, 0);  // onto its own rectangle: a square rarely pays for a second solve
   c.joined.deciding_map = true;
   c.valid = has_valid_map(c.joined);
+  if (!free_unions_) return;
+  SolvedChart free;
+  free.mesh = c.joined.mesh;
+  free.faces = c.joined.faces;
+  solve_onto(free, deciding_, 0, true);
+  free.deciding_map = true;
+  if (!has_valid_map(free) || (c.valid && !(texture_cost(free) < texture_cost(c.joined)))) return;
+  if (uv_boundary_crosses_itself(free.mesh.F.topRows(Eigen::Index(free.faces.size())), free.map.uv)) return;
+  c.joined = std::move(free);
+  c.valid = true;
 }
 
 // The texture the union costs more than its two pieces; unmapped, the smaller piece's cost.

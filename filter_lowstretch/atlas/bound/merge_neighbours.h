@@ -17,8 +17,10 @@ namespace lowstretch {
 class NeighbourMerging {
  public:
   // charts: those to merge (a chart with an invalid map takes no part); twin: opposite_half_edges(F).
+  // Each union is mapped onto its own rectangle; with free_unions, also free (the natural
+  // boundary), which it keeps where that costs less texture and its outline does not cross itself.
   NeighbourMerging(std::vector<SolvedChart> charts, const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F,
-                   const std::vector<int>& twin, const ChartOptions& options);
+                   const std::vector<int>& twin, const ChartOptions& options, bool free_unions = false);
   // Merges on while the charts' texture cost stays within `growth` times their cost before any merge.
   void merge_within(double growth);
   size_t merges() const { return merged_.size(); }
@@ -43,6 +45,7 @@ class NeighbourMerging {
   const Eigen::MatrixXd& unit_V_;
   const Eigen::MatrixXi& F_;
   Options deciding_;
+  bool free_unions_ = false;
   std::vector<SolvedChart> pieces_;     // the charts, then the union each merge made
   size_t charts_ = 0;
   std::vector<std::pair<int, int>> merged_;  // merge k joined these two into piece charts_ + k

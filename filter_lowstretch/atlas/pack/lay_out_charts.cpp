@@ -95,7 +95,8 @@ void fit_to_cells(std::vector<SolvedChart>& charts, const std::vector<char>& til
     SolvedChart& c = charts[size_t(i)];
     const Options share = for_share(options.disk, c.faces.size(), all_faces);
     if (!tiled[size_t(i)]) {
-      if (c.deciding_map) solve_chart(c, share, c.aspect());
+      if (c.deciding_map && c.free_boundary) solve_onto(c, share, 0, true);
+      else if (c.deciding_map) solve_chart(c, share, c.aspect());
       return;
     }
     const double cell = cells[size_t(i)].sizes().x() / cells[size_t(i)].sizes().y();
