@@ -376,8 +376,8 @@ void merge_by_count(MergeSteps& steps) {
 }
 
 // Candidates: the best atlas's charts merged with their neighbours (merge_neighbours.h), each union
-// on its own rectangle; with fewer_seams, also free (natural boundary) where that costs less,
-// packed by outline. The one with the shortest seams that keeps the least efficiency replaces the
+// on its own rectangle; with fewer_seams or a least efficiency given, also free (natural boundary)
+// where that costs less, packed by outline. The one with the shortest seams that keeps the least efficiency replaces the
 // best atlas. Whether one did.
 bool merge_for_shorter_seams(AtlasSearch& s) {
   const double least = least_efficiency(s.options, texture_efficiency(s.result));
@@ -385,7 +385,8 @@ bool merge_for_shorter_seams(AtlasSearch& s) {
   const ChartsResult unmerged = s.result;
   const std::vector<int> twin = opposite_half_edges(s.F);
   for (const bool free_unions : {false, true}) {
-    if (free_unions && !s.options.fewer_seams) continue;
+    // A least efficiency of the user's own is a trade-off chosen as fewer_seams is.
+    if (free_unions && !s.options.fewer_seams && !(s.options.min_efficiency > 0)) continue;
     NeighbourMerging merging(s.cut, s.unit_V, s.F, twin, s.options, free_unions);
     MergeSteps steps{s, merging, least, free_unions};
     if (free_unions) merge_by_count(steps);
