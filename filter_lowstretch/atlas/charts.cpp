@@ -24,6 +24,7 @@
 #include "core/half_edges.h"
 #include "atlas/cut/split_vertex_fans.h"
 #include "core/stretch.h"
+#include "atlas/cut/weld_duplicates.h"
 #include "atlas/cut/zero_area_parts.h"
 
 namespace lowstretch {
@@ -386,7 +387,8 @@ bool merge_for_shorter_seams(AtlasSearch& s) {
   const std::vector<int> twin = opposite_half_edges(s.F);
   for (const bool free_unions : {false, true}) {
     // A least efficiency of the user's own is a trade-off chosen as fewer_seams is.
-    if (free_unions && !s.options.fewer_seams && !(s.options.min_efficiency > 0)) continue;
+    if (free_unions && ((!s.options.fewer_seams && !(s.options.min_efficiency > 0)) || s.F.rows() > kTuning.most_free_union_faces))
+      continue;
     NeighbourMerging merging(s.cut, s.unit_V, s.F, twin, s.options, free_unions);
     MergeSteps steps{s, merging, least, free_unions};
     if (free_unions) merge_by_count(steps);
@@ -585,10 +587,35 @@ ChartsResult disk_or_atlas_of_whole(const Eigen::MatrixXd& V, const Eigen::Matri
   return atlas;
 }
 
+// A mesh with duplicate vertices: the charts made with them welded (weld_duplicates.h), each
+// duplicate taking the stretch of the vertex it was welded onto; an error if that fails.
+ChartsResult on_welded_copy(const Eigen::MatrixXd& V, const ChartOptions& options, const WeldedFaces& welded,
+                            Clock::time_point start) {
+  ChartsResult result = disk_or_atlas(V, welded.F, options, true);
+  if (result.error) return result;
+  for (size_t v = 0; v < welded.onto.size(); ++v)
+    if (welded.onto[v] != int(v) && Eigen::Index(v) < result.vertex_stretch.size())
+      result.vertex_stretch(Eigen::Index(v)) = result.vertex_stretch(welded.onto[v]);
+  result.notes.insert(result.notes.begin(), count_text(welded.welded, "duplicate vertex", "duplicate vertices") +
+                                                " (on another vertex's position) welded for the charts; the mesh is unchanged");
+  result.seconds_total = seconds_since(start);
+  return result;
+}
+
 ChartsResult disk_or_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options, bool own_copies) {
   const Clock::time_point start = Clock::now();
   Result whole = parameterize(V, F, options.disk);
   if (own_copies && whole.error.code == ErrorCode::UnweldedVertices) whole.error = {ErrorCode::SeveralComponents, 0, ""};
+  // Not a disk: duplicates welded first (a disk keeps its seams; a soup is refused below, as the
+  // manifold copy cannot help it). Copies the manifold copy made are not duplicates.
+  if (!own_copies && options.non_disk != NonDisk::Reject && whole.error && charts_would_help(whole.error.code) &&
+      !is_unwelded(V, F)) {
+    const WeldedFaces welded = weld_duplicate_vertices(V, F);
+    if (welded.welded > 0) {
+      ChartsResult result = on_welded_copy(V, options, welded, start);
+      if (!result.error) return result;
+    }
+  }
   if (options.non_disk != NonDisk::Reject && manifold_copy_helps(whole.error.code)) {
     const SplitFans split = split_vertex_fans(V, F);
     if (split.new_vertices > 0) return on_manifold_copy(V, F, options, split, start);
