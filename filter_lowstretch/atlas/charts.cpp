@@ -611,7 +611,13 @@ ChartsResult disk_or_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, c
   if (!own_copies && options.non_disk != NonDisk::Reject && whole.error && charts_would_help(whole.error.code) &&
       !is_unwelded(V, F)) {
     const WeldedFaces welded = weld_duplicate_vertices(V, F);
-    if (welded.welded > 0) {
+    // Not where welding joins more faces on an edge than two, or two running it the same way: those
+    // are parts that touch, or the two sides of a double-sided sheet, each better charted alone.
+    const auto bad_edges = [&](const Eigen::MatrixXi& faces) {
+      const SplitFans split = split_vertex_fans(V, faces);
+      return split.non_manifold_edges + split.misoriented_edges;
+    };
+    if (welded.welded > 0 && bad_edges(welded.F) <= bad_edges(F)) {
       ChartsResult result = on_welded_copy(V, options, welded, start);
       if (!result.error) return result;
     }

@@ -76,3 +76,26 @@ TEST(WeldDuplicates, TheAtlasOfAMeshWithDuplicatesIsTheAtlasWithoutThemAndSaysSo
     return n.find("6 duplicate vertices") != std::string::npos && n.find("the mesh is unchanged") != std::string::npos;
   }));
 }
+
+TEST(WeldDuplicates, TheTwoSidesOfADoubleSidedSheetAreNotWelded) {
+  // A sheet and its reversed copy on vertices of their own at the same positions, beside a torus
+  // (alone, half its vertices on others would make it a soup): welded, every inner edge of the
+  // sheet would hold four faces, and the manifold copy would cut it into single faces.
+  const testmesh::Mesh sheet = testmesh::grid(8, [](double x, double y) { return 0.2 * x * y; });
+  const testmesh::Mesh torus = testmesh::torus(32, 16);
+  testmesh::Mesh both = sheet;
+  const Eigen::Index n = sheet.V.rows(), faces = sheet.F.rows();
+  both.V.conservativeResize(2 * n, 3);
+  both.V.bottomRows(n) = sheet.V;
+  both.F.conservativeResize(2 * faces, 3);
+  for (Eigen::Index f = 0; f < faces; ++f) both.F.row(faces + f) << sheet.F(f, 0) + int(n), sheet.F(f, 2) + int(n), sheet.F(f, 1) + int(n);
+  EXPECT_EQ(weld_duplicate_vertices(both.V, both.F).welded, int(n)) << "the function alone welds them";
+  const testmesh::Mesh m = testmesh::joined(both, torus, 1, Eigen::RowVector3d(3, 0, 0));
+  const ChartsResult r = parameterize_charts(m.V, m.F, ChartOptions());
+  ASSERT_FALSE(r.error) << message(r.error);
+  std::vector<int> sheet_charts;
+  for (Eigen::Index f = 0; f < 2 * faces; ++f) sheet_charts.push_back(r.face_chart[size_t(f)]);
+  std::sort(sheet_charts.begin(), sheet_charts.end());
+  EXPECT_LE(std::unique(sheet_charts.begin(), sheet_charts.end()) - sheet_charts.begin(), 2) << "one chart per side";
+  EXPECT_TRUE(std::none_of(r.notes.begin(), r.notes.end(), [](const std::string& note) { return note.find("welded") != std::string::npos; }));
+}
