@@ -378,8 +378,8 @@ void merge_by_count(MergeSteps& steps) {
 
 // Candidates: the best atlas's charts merged with their neighbours (merge_neighbours.h), each union
 // on its own rectangle; with fewer_seams or a least efficiency given, also free (natural boundary)
-// where that costs less, packed by outline. The one with the shortest seams that keeps the least efficiency replaces the
-// best atlas. Whether one did.
+// where that costs less, packed by outline. The one with the shortest seams that keeps the least
+// efficiency replaces the best atlas. Whether one did.
 bool merge_for_shorter_seams(AtlasSearch& s) {
   const double least = least_efficiency(s.options, texture_efficiency(s.result));
   if (s.result.error || s.cut.empty() || !(texture_efficiency(s.result) >= least)) return false;

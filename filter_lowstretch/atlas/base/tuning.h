@@ -116,11 +116,11 @@ struct AtlasTuning {
   // (a merge of two large charts can cost much more than the step's growth).
   double merge_growths[9] = {0.01, 0.02, 0.05, 0.1, 0.2, 0.4, 1, 2, 4};
   int merge_halvings = 3;
-  // Free unions (fewer_seams) are merged all the way, then the count of merges bisected this many
-  // times: 2^7 steps resolve the last merges of a few hundred charts to one or two.
+  // Free unions (fewer_seams, or a least efficiency given) are merged all the way, then the count
+  // of merges bisected this many times: 2^7 steps resolve the last merges of a few hundred charts
+  // to one or two. Only on meshes of at most most_free_union_faces: each step lays out every chart
+  // fully mapped again, which on a 264k-face reconstruction took 565 s against 111 s without them.
   int merge_count_bisections = 7;
-  // ... on meshes of at most this many faces: each step lays out every chart fully mapped again,
-  // which on a 264k-face reconstruction took 565 s against 111 s without free unions.
   int most_free_union_faces = 100000;
   // Steps that fall below the least efficiency, in a row, before merging stops: the rectangle
   // layout of a step can fall far (a cell of the wrong shape squeezes a chart) where the next
