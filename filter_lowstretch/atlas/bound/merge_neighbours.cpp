@@ -5,8 +5,8 @@
 
 #include "atlas/base/tuning.h"
 #include "atlas/bound/deciding_map.h"
-#include "atlas/chart_map/boundary_crossing.h"
 #include "atlas/chart_map/chart_threads.h"
+#include "atlas/chart_map/free_charts.h"
 
 namespace lowstretch {
 
@@ -70,13 +70,11 @@ void NeighbourMerging::map(Candidate& c, std::vector<int>& local_of) {
   c.joined.deciding_map = true;
   c.valid = has_valid_map(c.joined);
   if (!free_unions_) return;
-  SolvedChart free;
-  free.mesh = c.joined.mesh;
-  free.faces = c.joined.faces;
+  SolvedChart free = unmapped_copy(c.joined);
   solve_onto(free, deciding_, 0, true);
   free.deciding_map = true;
   if (!has_valid_map(free) || (c.valid && !(texture_cost(free) < texture_cost(c.joined)))) return;
-  if (uv_boundary_crosses_itself(free.mesh.F.topRows(Eigen::Index(free.faces.size())), free.map.uv)) return;
+  if (crosses_itself(free)) return;
   c.joined = std::move(free);
   c.valid = true;
 }

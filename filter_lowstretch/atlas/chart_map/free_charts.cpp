@@ -27,7 +27,8 @@ void map_as_seen_along_normal(SolvedChart& chart) {
   chart.fit_box();
 }
 
-// A chart of the same faces, with no map yet.
+}  // namespace
+
 SolvedChart unmapped_copy(const SolvedChart& chart) {
   SolvedChart copy;
   copy.mesh = chart.mesh;
@@ -36,12 +37,9 @@ SolvedChart unmapped_copy(const SolvedChart& chart) {
   return copy;
 }
 
-// Whether a free map's outline crosses itself (so the map overlaps itself).
 bool crosses_itself(const SolvedChart& free) {
   return uv_boundary_crosses_itself(free.mesh.F.topRows(Eigen::Index(free.faces.size())), free.map.uv);
 }
-
-}  // namespace
 
 void free_the_charts_that_stretch(std::vector<SolvedChart>& charts, const ChartOptions& options, double must_pay) {
   std::vector<int> above;

@@ -9,6 +9,12 @@
 
 namespace lowstretch {
 
+// A chart of the same faces, with no map yet.
+SolvedChart unmapped_copy(const SolvedChart& chart);
+
+// Whether a free map's outline crosses itself (so the map overlaps itself).
+bool crosses_itself(const SolvedChart& free);
+
 // A chart whose rectangle uses its box poorly (kept above the bound: too small to cut, or its parts
 // stretched more; or a hole closed for the map left empty) is mapped again free: with the natural
 // boundary, or seen along its normal (a flat face of a CAD part, whose needles the natural boundary
