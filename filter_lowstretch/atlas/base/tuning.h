@@ -35,9 +35,6 @@ struct AtlasTuning {
   // And only a body, a part that kept two thirds of the faces of the chart it was cut from: parts
   // cut nearer the middle may meet the bound, and cutting them unmapped makes a worse atlas.
   double least_body_share = 0.67;
-  // The multigrid's relative residual for the maps that decide the cuts (the final maps keep the
-  // method's 1e-10): loose enough to be quick, tight enough to give the same charts.
-  double deciding_tolerance = 1e-8;
   // Multigrid iterations for a deciding map before the sparse LU takes over: on a large body that
   // does not converge, every further iteration is time lost before the LU.
   int deciding_iterations = 20;

@@ -9,7 +9,6 @@ namespace lowstretch {
 
 Options deciding_options(Options deciding) {
   deciding.max_passes = std::min(deciding.max_passes, 1);
-  deciding.solver.tolerance = std::max(deciding.solver.tolerance, kTuning.deciding_tolerance);
   deciding.solver.residual_accepted = std::max(deciding.solver.residual_accepted, 100 * deciding.solver.tolerance);
   deciding.solver.max_iterations = std::min(deciding.solver.max_iterations, kTuning.deciding_iterations);
   return deciding;
