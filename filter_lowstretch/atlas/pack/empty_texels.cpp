@@ -222,18 +222,26 @@ double take_tiled_charts(const std::vector<SolvedChart>& charts, const std::vect
   return area_3d > 0 ? uv_area / area_3d : 0;
 }
 
-// The lowest, then leftmost, free place of a chart's outline of `size` cells, over its turnings.
-bool find_place(const TexelGrid& grid, const SolvedChart& chart, const Eigen::Vector2d& size, int side, Outline& best,
-                int& best_x, int& best_y) {
+// Which turning of a chart is placed: the one whose lowest free place has the lowest bottom, or
+// the lowest top (then the leftmost).
+enum class Lowest { Bottom, Top };
+
+// The free place of a chart's outline of `size` cells over its turnings: the lowest (`lowest`),
+// then the leftmost.
+bool find_place(const TexelGrid& grid, const SolvedChart& chart, const Eigen::Vector2d& size, int side, Lowest lowest,
+                Outline& best, int& best_x, int& best_y) {
   bool found = false;
+  int best_key = 0;
   // A box looks the same half a turn round; an outline may fit into other room.
   const int turnings = chart.fill() >= kTuning.least_guest_fill ? 2 : 4;
   for (int turns = 0; turns < turnings; ++turns) {
     Outline outline = outline_of(chart, size, turns);
+    const int above = lowest == Lowest::Top ? int(outline.rows.size()) : 0;  // from the bottom to the key
+    const int last_y = found ? best_key - above : side;
     int x = 0, y = 0;
-    if (!grid.first_fit(outline.rows, found ? best_y : side, x, y)) continue;
-    if (!found || std::make_pair(y, x) < std::make_pair(best_y, best_x))
-      best_x = x, best_y = y, best = std::move(outline), found = true;
+    if (last_y < 0 || !grid.first_fit(outline.rows, last_y, x, y)) continue;
+    if (!found || std::make_pair(y + above, x) < std::make_pair(best_key, best_x))
+      best_x = x, best_y = y, best_key = y + above, best = std::move(outline), found = true;
   }
   return found;
 }
@@ -286,8 +294,8 @@ namespace {
 // Places the charts of `order` at `density` (grid cells^2 per unit of 3D area) where each first
 // fits; those that find no room are returned, or, if `stop_at_first`, only the first of them.
 std::vector<int> place_in_order(const std::vector<SolvedChart>& charts, const std::vector<int>& order, double density,
-                                const GridFrame& frame, bool stop_at_first, TexelGrid& grid, Eigen::MatrixXd& corner_uv,
-                                std::vector<int>& face_chart) {
+                                const GridFrame& frame, Lowest lowest, bool stop_at_first, TexelGrid& grid,
+                                Eigen::MatrixXd& corner_uv, std::vector<int>& face_chart) {
   std::vector<int> unplaced;
   for (const int g : order) {
     const SolvedChart& chart = charts[size_t(g)];
@@ -298,7 +306,7 @@ std::vector<int> place_in_order(const std::vector<SolvedChart>& charts, const st
     if (placed) {
       const Eigen::Vector2d size = chart.box.sizes() * std::sqrt(density * chart.kept.area_3d / own);  // in cells
       // A sliver longer than the texture (or a degenerate map) has no room.
-      placed = size.maxCoeff() <= grid.side() && find_place(grid, chart, size, frame.side, best, x, y);
+      placed = size.maxCoeff() <= grid.side() && find_place(grid, chart, size, frame.side, lowest, best, x, y);
     }
     if (!placed) {
       unplaced.push_back(g);
@@ -325,7 +333,7 @@ std::vector<int> put_in_empty_texels(const std::vector<SolvedChart>& charts, con
   for (const int i : guests) is_guest[size_t(i)] = 1;
   TexelGrid grid(frame.side);
   const double density = take_tiled_charts(charts, is_guest, corner_uv, frame, grid);
-  return place_in_order(charts, larger_first(charts, guests), density, frame, false, grid, corner_uv, face_chart);
+  return place_in_order(charts, larger_first(charts, guests), density, frame, Lowest::Bottom, false, grid, corner_uv, face_chart);
 }
 
 bool pack_by_outline(const std::vector<SolvedChart>& charts, const ChartOptions& options, Eigen::MatrixXd& corner_uv,
@@ -342,12 +350,16 @@ bool pack_by_outline(const std::vector<SolvedChart>& charts, const ChartOptions&
   if (!(area_3d > 0) || !(inside > 0)) return false;
   Eigen::MatrixXd best_uv;
   std::vector<int> best_chart;
+  // Either way of choosing a turning: each fills some layouts better than the other.
   const auto fits = [&](double density) {
-    TexelGrid grid = empty;
-    if (!place_in_order(charts, order, density, frame, true, grid, corner_uv, face_chart).empty()) return false;
-    best_uv = corner_uv;
-    best_chart = face_chart;
-    return true;
+    for (const Lowest lowest : {Lowest::Bottom, Lowest::Top}) {
+      TexelGrid grid = empty;
+      if (!place_in_order(charts, order, density, frame, lowest, true, grid, corner_uv, face_chart).empty()) continue;
+      best_uv = corner_uv;
+      best_chart = face_chart;
+      return true;
+    }
+    return false;
   };
   // The densest layout the grid holds, found by bisection: at `high` the charts would cover every
   // cell; halving the density until all fit, then narrowing down.
