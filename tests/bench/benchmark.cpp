@@ -1,8 +1,8 @@
 // Speed benchmark (not a test): for each mesh, our passes with the time of each phase solved by
 // multigrid and by the direct LU side by side (how far multigrid's kept map is from the chain of
-// direct solves, and what a fallback costs), a CHOLMOD Cholesky factorization of the same sparsity pattern as a
-// yardstick, and CGAL's iterative authalic and mean value parameterizers, all measured in one run
-// and reported as medians.
+// direct solves, and what a fallback costs), a CHOLMOD Cholesky factorization of the same sparsity
+// pattern as a yardstick, and CGAL's iterative authalic and mean value parameterizers, all
+// measured in one run and reported as medians.
 //
 // usage: lowstretch_benchmark [--runs N] [--cgal-max-vertices N] [--passes N] [--tolerance T] MESH...
 // (--tolerance: multigrid's relative residual, SolverOptions::tolerance, to measure another one)
