@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <iterator>
+#include <map>
 #include <numeric>
 #include <string>
 #include <utility>
@@ -14,6 +15,7 @@
 #include "atlas/bound/cut_invalid_charts.h"
 #include "core/disk_mesh.h"
 #include "atlas/pack/empty_texels.h"
+#include "atlas/chart_map/chart_threads.h"
 #include "atlas/chart_map/free_charts.h"
 #include "atlas/pack/lay_out_charts.h"
 #include "atlas/cut/mesh_components.h"
@@ -316,15 +318,43 @@ struct MergeSteps {
   NeighbourMerging& merging;
   double least;
   bool by_outline;
+  // Packed by outline, every chart keeps the map it has alone, and the steps share most charts:
+  // each is freed or mapped fully once (refined maps cost many solves), by its faces.
+  std::map<std::vector<int>, SolvedChart> mapped;
+
+  void map_once(std::vector<SolvedChart>& charts) {
+    std::vector<SolvedChart> fresh;
+    std::vector<size_t> at;
+    for (size_t i = 0; i < charts.size(); ++i) {
+      const auto found = mapped.find(charts[i].faces);
+      if (found != mapped.end()) {
+        charts[i] = found->second;
+      } else {
+        fresh.push_back(std::move(charts[i]));
+        at.push_back(i);
+      }
+    }
+    free_the_charts_that_stretch(fresh, s.options, s.cut_must_pay);
+    const size_t faces = faces_in(fresh, 0, fresh.size());
+    for_each_index(int(fresh.size()), [&](int i, int) {
+      map_at_own_shape(fresh[size_t(i)], for_share(s.options.disk, fresh[size_t(i)].faces.size(), faces));
+    }, largest_first(fresh, 0, fresh.size()));
+    for (size_t k = 0; k < fresh.size(); ++k) {
+      mapped.emplace(fresh[k].faces, fresh[k]);
+      charts[at[k]] = std::move(fresh[k]);
+    }
+  }
+
   // Whether the first `merges` merges keep the least efficiency.
   bool keep_least(size_t merges) {
     std::vector<SolvedChart> charts = merging.charts_after(merges);
-    free_the_charts_that_stretch(charts, s.options, s.cut_must_pay);
     ChartsResult merged;
     if (by_outline) {
+      map_once(charts);
       s.tried = charts;
       merged = packed_by_outline(s, charts);
     } else {
+      free_the_charts_that_stretch(charts, s.options, s.cut_must_pay);
       merged = s.tile(std::move(charts));
       if (!merged.error) fill_empty_texels(s, s.tried, merged);
     }
@@ -390,7 +420,7 @@ bool merge_for_shorter_seams(AtlasSearch& s) {
     if (free_unions && ((!s.options.fewer_seams && !(s.options.min_efficiency > 0)) || s.F.rows() > kTuning.most_free_union_faces))
       continue;
     NeighbourMerging merging(s.cut, s.unit_V, s.F, twin, s.options, free_unions);
-    MergeSteps steps{s, merging, least, free_unions};
+    MergeSteps steps{s, merging, least, free_unions, {}};
     if (free_unions) merge_by_count(steps);
     else merge_along_growths(steps);
   }
@@ -437,6 +467,14 @@ Error cut_by_stretch(AtlasSearch& s) {
   return {};
 }
 
+// The charts' options: with fewer_seams, as with refine, the maps that layouts keep are refined
+// (kTuning.refine_steps), a fixed number of steps, so that every run gives the same atlas.
+ChartOptions with_refined_charts(ChartOptions options) {
+  options.disk.refine = options.disk.refine || options.fewer_seams;
+  options.disk.refine_iterations = kTuning.refine_steps;
+  return options;
+}
+
 // Any mesh as charts. The candidates, in order, the best kept:
 // 1. a model made of faces (a CAD part) whose parts, mapped whole, are above the bound: its
 //    charts between sharp edges only (cutting such a model by stretch loses to them, and costs time);
@@ -446,7 +484,8 @@ Error cut_by_stretch(AtlasSearch& s) {
 // 4. the best of them with small charts in the texels its tiling leaves empty;
 // 5. that atlas with charts merged for shorter seams, each step measured the same way;
 // 6. the charts of the best of them packed by their outlines instead of tiled.
-ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options) {
+ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& given) {
+  const ChartOptions options = with_refined_charts(given);
   AtlasSearch s(V, F, options);
   if (Error e = start_search(s)) return failed_result(e);
   const bool only_sharp_edges = s.made_of_faces && !parts_meet_the_bound(s.unit_V, s.F, s.components, options);

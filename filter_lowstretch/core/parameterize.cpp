@@ -116,10 +116,12 @@ void keep_pass(const DiskMesh& disk, Eigen::MatrixXd uv, const FaceStretch& stre
     result.face_stretch(f) = stretch.valid(f) ? stretch.normalization * stretch.sigma(f) : inf;
 }
 
-// Lowers the kept map's L2 stretch directly (refine_stretch.h) within `seconds`; notes the gain.
-void refine(const DiskMesh& disk, double seconds, Eigen::MatrixXd& uv, FaceStretch& stretch, Result& result) {
+// Lowers the kept map's L2 stretch directly (refine_stretch.h) within `seconds`, or within
+// `iterations` steps if that is above 0; notes the gain.
+void refine(const DiskMesh& disk, double seconds, int iterations, Eigen::MatrixXd& uv, FaceStretch& stretch, Result& result) {
   RefineOptions options;
-  options.max_seconds = std::max(seconds, 0.05);
+  options.max_seconds = iterations > 0 ? std::numeric_limits<double>::infinity() : std::max(seconds, 0.05);
+  if (iterations > 0) options.max_iterations = iterations;
   RefineReport report;
   const Eigen::MatrixXd refined = refine_stretch(disk, uv, options, report);
   if (!report.started) {
@@ -205,7 +207,8 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
   }
 
   note_solver_fallbacks(result);
-  if (options.refine) refine(disk, seconds_since(start) * options.refine_time_factor, best_uv, best_stretch, result);
+  if (options.refine)
+    refine(disk, seconds_since(start) * options.refine_time_factor, options.refine_iterations, best_uv, best_stretch, result);
   keep_pass(disk, best_uv, best_stretch, V.rows(), result);
   result.seconds_total = seconds_since(start);
   report(1.0, "done");

@@ -31,6 +31,9 @@ struct Options {
   // refine_time_factor times the time the method took; a note says what it gained.
   bool refine = false;
   double refine_time_factor = 8.5;  // with the final measures, under 10 times the passes
+  // Above 0: at most this many refining steps instead, however long they take, so that every run
+  // gives the same map (the atlas's charts, whose maps decide where it cuts and merges).
+  int refine_iterations = 0;
   // Called with a fraction in [0, 1] and the current stage; return false to cancel the run.
   std::function<bool(double fraction, const char* stage)> progress;
   // Called after every pass with that pass's UV (rows as in V, unused rows 0), for callers that

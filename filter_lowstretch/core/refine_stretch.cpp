@@ -24,6 +24,7 @@ using Clock = std::chrono::steady_clock;
 struct FlatTriangle {
   Eigen::Matrix<double, 3, 2> g;
   double area = 0;
+  double least_uv_area = 0;  // see refine_stretch.h
 };
 
 std::vector<FlatTriangle> flatten(const DiskMesh& disk) {
@@ -61,15 +62,15 @@ double energy(const DiskMesh& disk, const std::vector<FlatTriangle>& flat, const
   for (Eigen::Index f = 0; f < disk.F.rows(); ++f) {
     const FlatTriangle& t = flat[size_t(f)];
     const Eigen::RowVector3i face = disk.F.row(f);
-    // A zero-area 3D triangle carries no stretch, but its UV triangle must stay positive too.
+    // A zero-area 3D triangle carries no stretch, but its UV triangle must keep its least area too.
     if (!(t.area > 0)) {
-      if (!(signed_uv_area(uv.row(face(0)), uv.row(face(1)), uv.row(face(2))) > 0))
+      if (!(signed_uv_area(uv.row(face(0)), uv.row(face(1)), uv.row(face(2))) > t.least_uv_area))
         return std::numeric_limits<double>::infinity();
       continue;
     }
     const Eigen::Matrix2d J = jacobian(t, uv, face);
-    const double det = J.determinant();
-    if (!(det > 0)) return std::numeric_limits<double>::infinity();
+    const double det = J.determinant();  // UV area over 3D area
+    if (!(det > 0) || !(det * t.area > t.least_uv_area)) return std::numeric_limits<double>::infinity();
     const double norm2 = J.squaredNorm();
     total += t.area * norm2 / (2 * det * det);
     if (!grad) continue;
@@ -81,16 +82,17 @@ double energy(const DiskMesh& disk, const std::vector<FlatTriangle>& flat, const
   return total;
 }
 
-// The largest step t along d that keeps every UV triangle positive, capped at 1e9: twice the
-// signed area of a triangle moving along d is c + b t + a t^2.
-double largest_safe_step(const DiskMesh& disk, const Eigen::MatrixXd& uv, const Eigen::MatrixXd& d) {
+// The largest step t along d that keeps every UV triangle above its least area, capped at 1e9:
+// twice the signed area of a triangle moving along d, less twice its least area, is c + b t + a t^2.
+double largest_safe_step(const DiskMesh& disk, const std::vector<FlatTriangle>& flat, const Eigen::MatrixXd& uv,
+                         const Eigen::MatrixXd& d) {
   double largest = 1e9;
   for (Eigen::Index f = 0; f < disk.F.rows(); ++f) {
     const Eigen::RowVector3i face = disk.F.row(f);
     const Eigen::RowVector2d p1 = uv.row(face(1)) - uv.row(face(0)), p2 = uv.row(face(2)) - uv.row(face(0));
     const Eigen::RowVector2d q1 = d.row(face(1)) - d.row(face(0)), q2 = d.row(face(2)) - d.row(face(0));
     const auto cross = [](const Eigen::RowVector2d& x, const Eigen::RowVector2d& y) { return x.x() * y.y() - x.y() * y.x(); };
-    const double c = cross(p1, p2), b = cross(p1, q2) + cross(q1, p2), a = cross(q1, q2);
+    const double c = cross(p1, p2) - 2 * flat[size_t(f)].least_uv_area, b = cross(p1, q2) + cross(q1, p2), a = cross(q1, q2);
     double root = std::numeric_limits<double>::infinity();
     if (std::abs(a) < 1e-300) {
       if (b < 0) root = -c / b;
@@ -195,7 +197,12 @@ void fill_projected_hessian(const DiskMesh& disk, const std::vector<FlatTriangle
 Eigen::MatrixXd refine_stretch(const DiskMesh& disk, const Eigen::MatrixXd& uv0, const RefineOptions& options,
                                RefineReport& report) {
   const Clock::time_point start = Clock::now();
-  const std::vector<FlatTriangle> flat = flatten(disk);
+  std::vector<FlatTriangle> flat = flatten(disk);
+  Eigen::VectorXd uv_area(disk.F.rows());
+  for (Eigen::Index f = 0; f < disk.F.rows(); ++f)
+    uv_area(f) = std::max(0.0, signed_uv_area(uv0.row(disk.F(f, 0)), uv0.row(disk.F(f, 1)), uv0.row(disk.F(f, 2))));
+  const double least = 1e-6 * uv_area.sum();
+  for (Eigen::Index f = 0; f < disk.F.rows(); ++f) flat[size_t(f)].least_uv_area = std::min(least, 0.5 * uv_area(f));
   Eigen::MatrixXd uv = uv0;
   double e = energy(disk, flat, uv, nullptr);
   report = RefineReport();
@@ -233,7 +240,7 @@ Eigen::MatrixXd refine_stretch(const DiskMesh& disk, const Eigen::MatrixXd& uv0,
       if (unknown[size_t(i)] >= 0) d.row(i) = step.segment<2>(2 * unknown[size_t(i)]).transpose();
     const double slope = g.dot(step);  // < 0: a descent direction
     if (!(slope < 0)) break;
-    double t = std::min(1.0, 0.9 * largest_safe_step(disk, uv, d));
+    double t = std::min(1.0, 0.9 * largest_safe_step(disk, flat, uv, d));
     double next = std::numeric_limits<double>::infinity();
     for (int tries = 0; tries < 40; ++tries, t /= 2) {
       next = energy(disk, flat, uv + t * d, nullptr);

@@ -48,8 +48,9 @@ std::vector<OptionRow> make_table() {
        [](const ChartOptions& o) { return o.max_stretch; }, [](ChartOptions& o, double v) { o.max_stretch = v; }},
       {"fewer_seams", "--fewer-seams", "fewerSeams", "Fewer seams", OptionKind::Switch, {}, {}, "", kToolAndFilter,
        "Charts: merge more charts, for seams about as short as UVAtlas's: the atlas keeps a texture efficiency "
-       "(coverage / L2^2) of 0.55 and 75% of the unmerged atlas's, instead of 0.61 and 90%, and merged charts may "
-       "keep a free boundary, packed by their outlines, so charts stretch more and the atlas takes longer.",
+       "(coverage / L2^2) of 0.55 and 75% of the unmerged atlas's, instead of 0.61 and 90%, merged charts may keep a "
+       "free boundary, packed by their outlines, and every chart is refined as Refine stretch does, so charts stretch "
+       "more and the atlas takes longer.",
        [](const ChartOptions& o) { return double(o.fewer_seams); }, [](ChartOptions& o, double v) { o.fewer_seams = v != 0; }},
       {"texture_size", "--texture-size", "textureSize", "Texture size", OptionKind::Whole, {}, {}, "8 to 65536",
        kToolAndFilter,
@@ -64,7 +65,8 @@ std::vector<OptionRow> make_table() {
        [](const ChartOptions& o) { return o.gutter; }, [](ChartOptions& o, double v) { o.gutter = v; }},
       {"refine", "--refine", "refineStretch", "Refine stretch", OptionKind::Switch, {}, {}, "", kToolAndFilter,
        "After the paper's passes, lower the L2 stretch further by minimizing it directly (projected Newton, "
-       "boundary fixed, no triangle flips), for at most 10 times the time the passes took.",
+       "boundary fixed, no triangle flips), for at most 10 times the time the passes took; an atlas's charts take 20 "
+       "steps each instead, so that every run gives the same atlas.",
        [](const ChartOptions& o) { return double(o.disk.refine); },
        [](ChartOptions& o, double v) { o.disk.refine = v != 0; }},
       {"max_charts", "--max-charts", "", "", OptionKind::Whole, {}, {}, "at least 1", kToolOnly,

@@ -3,10 +3,11 @@ puts fins (non-manifold edges), zero-area slivers, duplicate vertices, dust, hol
 edges into a closed mesh; TestReconstructions: tests/bench/make_reconstructions.py makes MeshLab's
 ball pivoting, VCG and screened Poisson reconstructions and marching cubes on a quantized signed
 distance of it (run by --scan-python, a Python with numpy, pymeshlab and scikit-image). For each
-file (test_atlas[NAME]) `lowstretch FILE -o out.obj --json` must exit 0, write every input face
-with texture coordinates inside the gutter, and leave no flipped UV triangle and no zero-area one
-on a face with 3D area (a face of zero 3D area may have zero UV area, never a negative one), as
-read back from the OBJ; the triangle soup of make_defects.py is refused with the weld message
+file (test_atlas[NAME]; test_fewer_seams_atlas[NAME] adds --fewer-seams on two)
+`lowstretch FILE -o out.obj --json` must exit 0, write every input face with texture coordinates
+inside the gutter, and leave no flipped UV triangle and no zero-area one on a face with 3D area
+(a face of zero 3D area may have zero UV area, never a negative one), as read back from the OBJ;
+the triangle soup of make_defects.py is refused with the weld message
 (TestDefects::test_soup_refused). The closed mesh is CGAL's armadillo (--cgal-meshes).
 
   python3 -B -m pytest -p no:cacheprovider tests/e2e/test_scan_atlas.py::TestDefects --tool build/lowstretch
@@ -62,10 +63,10 @@ def closed_mesh(request):
     return os.path.join(pytest_options.required(request.config, "cgal_meshes"), CLOSED_MESH)
 
 
-def check_atlas(tool, path, work):
+def check_atlas(tool, path, work, options=()):
     name = os.path.basename(path)
-    out = os.path.join(work, name[:-4] + ".obj")
-    proc = subprocess.run([tool, path, "-o", out, "--json"], capture_output=True, text=True, timeout=900)
+    out = os.path.join(work, name[:-4] + "".join(options) + ".obj")
+    proc = subprocess.run([tool, path, "-o", out, "--json", *options], capture_output=True, text=True, timeout=900)
     assert proc.returncode == 0, f"{name}: exit 0 ({proc.returncode}: {proc.stderr.strip()[:200]})"
     layout = json.loads(proc.stdout)["layout"]
     assert layout["flipped"] == 0 and layout["degenerate"] == 0, \
@@ -98,6 +99,11 @@ class TestDefects:
     @pytest.mark.parametrize("name", DEFECTS)
     def test_atlas(self, tool, scans, name):
         check_atlas(tool, str(scans / (name + ".off")), str(scans))
+
+    # Fewer seams refines every chart's map, which must not shrink a sliver's UV triangle to nothing.
+    @pytest.mark.parametrize("name", ["slivers", "collapsed"])
+    def test_fewer_seams_atlas(self, tool, scans, name):
+        check_atlas(tool, str(scans / (name + ".off")), str(scans), ["--fewer-seams"])
 
     def test_soup_refused(self, tool, scans):
         out = scans / "soup.obj"

@@ -11,6 +11,7 @@ Options deciding_options(Options deciding) {
   deciding.max_passes = std::min(deciding.max_passes, 1);
   deciding.solver.residual_accepted = std::max(deciding.solver.residual_accepted, 100 * deciding.solver.tolerance);
   deciding.solver.max_iterations = std::min(deciding.solver.max_iterations, kTuning.deciding_iterations);
+  deciding.refine = false;  // the layouts refine the maps they keep
   return deciding;
 }
 

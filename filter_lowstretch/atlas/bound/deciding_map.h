@@ -6,9 +6,9 @@
 
 namespace lowstretch {
 
-// Deciding where to cut needs the map's stretch, not its last digits: U0 and U1 only, with a
-// true residual up to 100 times the tolerance accepted before the sparse LU takes over, give the
-// same cuts in less time.
+// Deciding where to cut needs the map's stretch, not its last digits: U0 and U1 only, never
+// refined, with a true residual up to 100 times the tolerance accepted before the sparse LU takes
+// over, give the same cuts in less time.
 Options deciding_options(Options deciding);
 
 // Onto the chart's own rectangle, or the square where that may bring it under the bound (a chart

@@ -143,6 +143,8 @@ void solve_onto(SolvedChart& chart, Options options, double aspect, bool free_bo
   options.pass_uv = [&chart](int, const Eigen::MatrixXd& uv) { chart.passes.push_back(measure_real_faces(chart.mesh, uv)); };
   chart.map = parameterize(chart.mesh.V, chart.mesh.F, options);
   if (chart.map.error) return;
+  // A refined map is none of the passes: measured on its own.
+  if (options.refine) chart.passes.at(size_t(chart.map.chosen_pass)) = measure_real_faces(chart.mesh, chart.map.uv);
   chart.kept = chart.passes.at(size_t(chart.map.chosen_pass));
   chart.fit_box();
 }

@@ -168,8 +168,10 @@ Chart chart_summary(const SolvedChart& c, double unit) {
   return chart;
 }
 
-// "6 interior edges ..." -> "some interior edges ...": one note for all counts.
+// One note for all counts and measures: "6 interior edges ..." -> "some interior edges ...", and
+// parameterize's "refined: L2 stretch 1.3 -> 1.2 in ..." -> "refined: L2 stretch lowered".
 std::string without_count(const std::string& note) {
+  if (note.rfind("refined: ", 0) == 0) return "refined: L2 stretch lowered";
   const size_t digits = note.find_first_not_of("0123456789");
   return digits > 0 && digits != std::string::npos && note[digits] == ' ' ? "some" + note.substr(digits) : note;
 }

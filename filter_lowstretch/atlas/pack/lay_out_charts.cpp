@@ -27,6 +27,11 @@ void stretch_to_aspect(SolvedChart& chart, double aspect) {
 
 }  // namespace
 
+void map_at_own_shape(SolvedChart& chart, const Options& options) {
+  if (chart.deciding_map && chart.free_boundary) solve_onto(chart, options, 0, true);
+  else if (chart.deciding_map) solve_chart(chart, options, chart.aspect());
+}
+
 std::vector<double> cell_areas(const std::vector<SolvedChart>& charts) {
   // A chart that does not fill its box (a free chart, a rectangle with closed holes) gets a cell
   // that holds its box at the texel density of the others.
@@ -95,8 +100,7 @@ void fit_to_cells(std::vector<SolvedChart>& charts, const std::vector<char>& til
     SolvedChart& c = charts[size_t(i)];
     const Options share = for_share(options.disk, c.faces.size(), all_faces);
     if (!tiled[size_t(i)]) {
-      if (c.deciding_map && c.free_boundary) solve_onto(c, share, 0, true);
-      else if (c.deciding_map) solve_chart(c, share, c.aspect());
+      map_at_own_shape(c, share);
       return;
     }
     const double cell = cells[size_t(i)].sizes().x() / cells[size_t(i)].sizes().y();

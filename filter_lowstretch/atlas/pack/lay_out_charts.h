@@ -14,6 +14,10 @@ namespace lowstretch {
 // or has closed holes (so that every chart has the same texel density).
 std::vector<double> cell_areas(const std::vector<SolvedChart>& charts);
 
+// A chart that keeps its own shape (packed by outline, or put into empty texels) mapped fully if
+// its map was made only to decide: free, or onto its own rectangle, as it was.
+void map_at_own_shape(SolvedChart& chart, const Options& options);
+
 // Every chart but the guests onto its cell of the tiling: mapped again onto a rectangle of the
 // cell's shape (turned a quarter if the chart is wider the other way), then fitted into the cell
 // less half the gutter on each side; then the guests into empty texels, those without room going
