@@ -467,10 +467,11 @@ Error cut_by_stretch(AtlasSearch& s) {
   return {};
 }
 
-// The charts' options: with fewer_seams, as with refine, the maps that layouts keep are refined
-// (kTuning.refine_steps), a fixed number of steps, so that every run gives the same atlas.
-ChartOptions with_refined_charts(ChartOptions options) {
-  options.disk.refine = options.disk.refine || options.fewer_seams;
+// The charts' options: with fewer_seams (on meshes of at most kTuning.most_free_union_faces), as
+// with refine, the maps that layouts keep are refined (kTuning.refine_steps), a fixed number of
+// steps, so that every run gives the same atlas.
+ChartOptions with_refined_charts(ChartOptions options, Eigen::Index faces) {
+  options.disk.refine = options.disk.refine || (options.fewer_seams && faces <= kTuning.most_free_union_faces);
   options.disk.refine_iterations = kTuning.refine_steps;
   return options;
 }
@@ -485,7 +486,7 @@ ChartOptions with_refined_charts(ChartOptions options) {
 // 5. that atlas with charts merged for shorter seams, each step measured the same way;
 // 6. the charts of the best of them packed by their outlines instead of tiled.
 ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& given) {
-  const ChartOptions options = with_refined_charts(given);
+  const ChartOptions options = with_refined_charts(given, F.rows());
   AtlasSearch s(V, F, options);
   if (Error e = start_search(s)) return failed_result(e);
   const bool only_sharp_edges = s.made_of_faces && !parts_meet_the_bound(s.unit_V, s.F, s.components, options);

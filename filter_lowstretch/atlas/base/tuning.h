@@ -85,7 +85,9 @@ struct AtlasTuning {
   // With fewer_seams (or refine), each map a layout keeps is refined (core/refine_stretch.h) this
   // many steps, however long they take, so that every run gives the same atlas. The maps that
   // decide cuts and merges are not: refining them too took twice the time on the table's camel,
-  // for a longer seam. 10 steps left holes3 below UVAtlas's efficiency.
+  // for a longer seam. 10 steps left holes3 below UVAtlas's efficiency. Only on meshes of at most
+  // most_free_union_faces, as the free unions: every merge step refines its charts again, which
+  // on the 264k-face Poisson reconstruction took 301 s.
   int refine_steps = 20;
   // Threads for the charts: at most this many, as many as there are cores.
   int most_threads = 8;
