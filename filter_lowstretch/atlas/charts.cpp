@@ -473,6 +473,7 @@ Error cut_by_stretch(AtlasSearch& s) {
 ChartOptions with_refined_charts(ChartOptions options, Eigen::Index faces) {
   options.disk.refine = options.disk.refine || (options.fewer_seams && faces <= kTuning.most_free_union_faces);
   options.disk.refine_iterations = kTuning.refine_steps;
+  options.disk.refine_least_area = kTuning.refine_least_area;
   return options;
 }
 

@@ -117,11 +117,14 @@ void keep_pass(const DiskMesh& disk, Eigen::MatrixXd uv, const FaceStretch& stre
 }
 
 // Lowers the kept map's L2 stretch directly (refine_stretch.h) within `seconds`, or within
-// `iterations` steps if that is above 0; notes the gain.
-void refine(const DiskMesh& disk, double seconds, int iterations, Eigen::MatrixXd& uv, FaceStretch& stretch, Result& result) {
+// method.refine_iterations steps if that is above 0; notes the gain.
+void refine(const DiskMesh& disk, double seconds, const Options& method, Eigen::MatrixXd& uv, FaceStretch& stretch,
+            Result& result) {
   RefineOptions options;
+  const int iterations = method.refine_iterations;
   options.max_seconds = iterations > 0 ? std::numeric_limits<double>::infinity() : std::max(seconds, 0.05);
   if (iterations > 0) options.max_iterations = iterations;
+  options.least_area_share = method.refine_least_area;
   RefineReport report;
   const Eigen::MatrixXd refined = refine_stretch(disk, uv, options, report);
   if (!report.started) {
@@ -208,7 +211,7 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
 
   note_solver_fallbacks(result);
   if (options.refine)
-    refine(disk, seconds_since(start) * options.refine_time_factor, options.refine_iterations, best_uv, best_stretch, result);
+    refine(disk, seconds_since(start) * options.refine_time_factor, options, best_uv, best_stretch, result);
   keep_pass(disk, best_uv, best_stretch, V.rows(), result);
   result.seconds_total = seconds_since(start);
   report(1.0, "done");

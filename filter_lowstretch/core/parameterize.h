@@ -34,6 +34,7 @@ struct Options {
   // Above 0: at most this many refining steps instead, however long they take, so that every run
   // gives the same map (the atlas's charts, whose maps decide where it cuts and merges).
   int refine_iterations = 0;
+  double refine_least_area = 0;  // RefineOptions::least_area_share
   // Called with a fraction in [0, 1] and the current stage; return false to cancel the run.
   std::function<bool(double fraction, const char* stage)> progress;
   // Called after every pass with that pass's UV (rows as in V, unused rows 0), for callers that

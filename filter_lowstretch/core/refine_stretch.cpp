@@ -201,7 +201,7 @@ Eigen::MatrixXd refine_stretch(const DiskMesh& disk, const Eigen::MatrixXd& uv0,
   Eigen::VectorXd uv_area(disk.F.rows());
   for (Eigen::Index f = 0; f < disk.F.rows(); ++f)
     uv_area(f) = std::max(0.0, signed_uv_area(uv0.row(disk.F(f, 0)), uv0.row(disk.F(f, 1)), uv0.row(disk.F(f, 2))));
-  const double least = 1e-6 * uv_area.sum();
+  const double least = options.least_area_share * uv_area.sum();
   for (Eigen::Index f = 0; f < disk.F.rows(); ++f) flat[size_t(f)].least_uv_area = std::min(least, 0.5 * uv_area(f));
   Eigen::MatrixXd uv = uv0;
   double e = energy(disk, flat, uv, nullptr);

@@ -2,13 +2,11 @@
 // sum_T A3D(T) sigma(T)^2 directly, boundary fixed, never letting a UV triangle flip or collapse.
 // sigma(T)^2 = |J^-1|_F^2 / 2, with J the 2x2 Jacobian of the map from the triangle (in a plane
 // of its own) to UV, so the energy grows without bound as a triangle collapses: a step that keeps
-// every triangle positive, and lowers the energy, keeps the map valid. No UV triangle ends below a
-// millionth of the map's area, or half its own area if that is less: a sliver's stretch weighs
-// next to nothing, and the energy alone would shrink its UV triangle toward its near-zero 3D area,
-// past what a texture resolves. Each step is a projected Newton step (per-triangle Hessians with
-// their negative eigenvalues clamped, one CHOLMOD Cholesky factorization with the pattern analysed
-// once), cut to 90% of the largest step that keeps every triangle above its least area, then
-// backtracked until the energy falls enough (Armijo).
+// every triangle positive, and lowers the energy, keeps the map valid. Each step is a projected
+// Newton step (per-triangle Hessians with their negative eigenvalues clamped, one CHOLMOD Cholesky
+// factorization with the pattern analysed once), cut to 90% of the largest step that keeps every
+// triangle above its least area (RefineOptions), then backtracked until the energy falls enough
+// (Armijo).
 #pragma once
 #include <Eigen/Core>
 
@@ -20,6 +18,10 @@ struct RefineOptions {
   int max_iterations = 100000;  // the time budget usually ends it first
   double max_seconds = 10;            // the caller scales it with the time the method took
   double relative_decrease = 1e-5;    // stop when an iteration lowers the energy by less
+  // No UV triangle ends below this share of the map's UV area, or half its own area if that is
+  // less: a sliver's stretch weighs next to nothing, and the energy alone shrinks its UV triangle
+  // toward its near-zero 3D area, past what a texture resolves (an atlas's charts set it).
+  double least_area_share = 0;
 };
 
 struct RefineReport {

@@ -87,8 +87,8 @@ TEST(RefineStretch, ASliverKeepsAUvTriangleATextureResolves) {
   // A flat grid with one interior vertex moved next to the far edge of one of its triangles: that
   // triangle is a sliver of next to no 3D area, and the map with least energy is the mesh's own
   // layout, where the sliver's UV triangle is as thin. Start from that layout with the vertex a
-  // little back, the sliver at 4 millionths of the map's area: refining may take it down to a
-  // millionth, no further.
+  // little back, the sliver at 4 millionths of the map's area: refining with a least area share
+  // of a millionth takes it that far down, no further; without one, to its 3D area.
   const testmesh::Mesh m = testmesh::grid(8);
   DiskMesh grid, disk;
   ASSERT_FALSE(make_disk_mesh(m.V, m.F, grid));
@@ -110,6 +110,7 @@ TEST(RefineStretch, ASliverKeepsAUvTriangleATextureResolves) {
   ASSERT_NEAR(area(uv, sliver), 4e-6, 1e-12);
   RefineOptions options;
   options.relative_decrease = 1e-14;
+  options.least_area_share = 1e-6;
   RefineReport report;
   const Eigen::MatrixXd refined = refine_stretch(disk, uv, options, report);
   ASSERT_TRUE(report.started);
@@ -117,6 +118,9 @@ TEST(RefineStretch, ASliverKeepsAUvTriangleATextureResolves) {
   EXPECT_GE(area(refined, sliver), 1e-6 * (1 - 1e-9));
   EXPECT_LT(area(refined, sliver), 3e-6) << "the sliver did shrink, toward its least area";
   EXPECT_EQ(non_positive_triangles(disk, refined), 0);
+  options.least_area_share = 0;
+  const Eigen::MatrixXd free = refine_stretch(disk, uv, options, report);
+  EXPECT_LT(area(free, sliver), 1e-9) << "without a least area the sliver shrinks toward its 3D area";
 }
 
 TEST(RefineStretch, AFixedNumberOfStepsGivesTheSameMapEveryRun) {
