@@ -188,10 +188,8 @@ struct AtlasSearch {
   AtlasSearch(const AtlasSearch&) = delete;
   AtlasSearch& operator=(const AtlasSearch&) = delete;
 
-  ChartsResult tile(std::vector<SolvedChart> charts) {
-    tried = charts;
-    return atlas_of(std::move(charts), {}, unit_V, F, unit, int(V.rows()), options);
-  }
+  // The charts tiled, or packed by their outlines where the tiling cannot place them.
+  ChartsResult tile(std::vector<SolvedChart> charts);
 };
 
 // The components and the unit box; an error if components share a vertex.
@@ -296,6 +294,18 @@ ChartsResult packed_by_outline(const AtlasSearch& s, const std::vector<SolvedCha
       packed = std::move(flat);
     }
   }
+  return packed;
+}
+
+// A cell per chart, each a few texels wide inside its gutter, cannot hold thousands of tiny charts
+// (a scan's debris) on a small texture or with a wide gutter; their outlines need no such floor.
+ChartsResult AtlasSearch::tile(std::vector<SolvedChart> charts) {
+  tried = charts;
+  ChartsResult tiled = atlas_of(std::move(charts), {}, unit_V, F, unit, int(V.rows()), options);
+  if (tiled.error.code != ErrorCode::ChartsNotPacked) return tiled;
+  ChartsResult packed = packed_by_outline(*this, tried);
+  if (packed.error) return tiled;
+  packed.notes.push_back(std::to_string(tried.size()) + " charts are too many for a cell each in the tiling: packed by their outlines");
   return packed;
 }
 

@@ -58,7 +58,8 @@ std::string message(const Error& e) {
              "): try the circle boundary or Floater weights";
     case ErrorCode::ChartsNotPacked:
       return "the packer could not place the " + n(e.count) +
-             " charts in the unit square: remove tiny parts (MeshLab: Remove Isolated pieces) and try again";
+             " charts in the unit square: remove tiny parts (MeshLab: Remove Isolated pieces), or choose a larger "
+             "texture or a narrower gutter, and try again";
     case ErrorCode::Cancelled: return "cancelled";
   }
   return "unknown error";

@@ -109,6 +109,30 @@ TEST(LayOutCharts, TinyPartsThatTakeMuchOfTheTextureAreNoted) {
   EXPECT_GT(r.notes.size(), alone.notes.size());
 }
 
+// More debris than the tiling has cells for, each a few texels wide inside its gutter (500 specks
+// on a 128-texel texture with a 3-texel gutter): packed by their outlines, which need no such
+// floor, instead of refused.
+TEST(LayOutCharts, MoreTinyPartsThanTheTilingHasCellsForArePackedByTheirOutlines) {
+  testmesh::Mesh m = testmesh::sphere(16, 24);
+  testmesh::Mesh speck;
+  speck.V.resize(3, 3);
+  speck.V << 0, 0, 0, 0.01, 0, 0, 0, 0.01, 0;
+  speck.F.resize(1, 3);
+  speck.F << 0, 1, 2;
+  for (int i = 0; i < 500; ++i) m = testmesh::joined(m, speck, 1, Eigen::RowVector3d(2 + i % 25, i / 25, 0));
+  ChartOptions options;
+  options.non_disk = NonDisk::Atlas;
+  options.texture_size = 128;
+  options.gutter = 3;
+  const ChartsResult r = parameterize_charts(m.V, m.F, options);
+  ASSERT_FALSE(r.error) << message(r.error);
+  expect_valid_layout(m.F, r);
+  EXPECT_GE(r.charts.size(), 502u) << "the sphere cut, and a chart per speck";
+  EXPECT_LT(r.layout.l2_stretch, 1.5) << "the sphere cut into charts, not mapped whole";
+  EXPECT_TRUE(std::any_of(r.notes.begin(), r.notes.end(),
+                          [](const std::string& n) { return n.find("packed by their outlines") != std::string::npos; }));
+}
+
 // A chart that fills its box gets its 3D area; one with a closed hole gets its area over the share
 // of its box its real faces cover (measured here from its map), so that its hole's texels are
 // counted in its cell.
