@@ -4,10 +4,13 @@
 measurement of xatlas and UVAtlas (listed below).
 
 usage: atlas_table.py --tool build/lowstretch --venv ~/.cache/filter_lowstretch/atlas-venv
-                      [--tool-args "--atlas"] [--markdown] [--skip-uvatlas] [--xatlas-brute-force] MESH...
+                      [--tool-args "--atlas"] [--markdown] [--skip-uvatlas] [--xatlas-brute-force]
+                      [--gutter G] MESH...
 
 xatlas runs with its defaults; --xatlas-brute-force adds a row of xatlas with its brute-force
-packer (PackOptions.bruteForce), the slower and tighter one.
+packer (PackOptions.bruteForce), the slower and tighter one. Each tool keeps its own gutter between
+charts (ours 2 texels of 1024, UVAtlas 1, xatlas none) unless --gutter G gives all three the same:
+ours --gutter G, xatlas PackOptions.padding G (whole texels of its about 1024), UVAtlas gutter G.
 
 Re-runs itself under the venv's python (made if missing, with PACKAGES; Open3D also needs Debian's
 libusb-1.0-0); each peer runs in a child process, so that a native crash is reported. Columns:
@@ -81,8 +84,9 @@ def read_mesh(path):
     return np.array(vertices, float), np.array(tris, np.int64).reshape(-1, 3)
 
 
-def worker(name, mesh_path, out):
-    """Runs one peer on a mesh and saves the input faces it mapped and their per-corner UV."""
+def worker(name, mesh_path, out, gutter="none"):
+    """Runs one peer on a mesh and saves the input faces it mapped and their per-corner UV; gutter:
+    texels between charts, or "none" for the peer's own."""
     V, F = read_mesh(mesh_path)
     if name in ("xatlas", "xatlas-bf"):
         import xatlas
@@ -91,6 +95,8 @@ def worker(name, mesh_path, out):
         atlas.add_mesh(V, F)
         pack = xatlas.PackOptions()
         pack.bruteForce = name == "xatlas-bf"
+        if gutter != "none":
+            pack.padding = round(float(gutter))
         atlas.generate(pack_options=pack)
         vmapping, indices, uvs = atlas[0]
         seconds = time.perf_counter() - start
@@ -101,7 +107,10 @@ def worker(name, mesh_path, out):
         mesh.vertex.positions = o3d.core.Tensor(V.astype(np.float32))
         mesh.triangle.indices = o3d.core.Tensor(F.astype(np.int32))
         start = time.perf_counter()
-        mesh.compute_uvatlas(size=1024)  # defaults: gutter 1, max_stretch 1/6
+        if gutter == "none":
+            mesh.compute_uvatlas(size=1024)  # defaults: gutter 1, max_stretch 1/6
+        else:
+            mesh.compute_uvatlas(size=1024, gutter=float(gutter))
         seconds = time.perf_counter() - start
         faces, corner_uv = F, mesh.triangle.texture_uvs.numpy()
     np.savez(out, faces=faces, uv=corner_uv, seconds=seconds)
@@ -112,9 +121,10 @@ def status(proc):
     return f"(signal {-code}) " if code < 0 else f"(exit {code}) "
 
 
-def run_peer(name, mesh, V, tmp):
+def run_peer(name, mesh, V, tmp, gutter):
     out = os.path.join(tmp, name + ".npz")
-    proc = subprocess.run([sys.executable, os.path.abspath(__file__), "--worker", name, mesh, out],
+    proc = subprocess.run([sys.executable, os.path.abspath(__file__), "--worker", name, mesh, out,
+                           "none" if gutter is None else str(gutter)],
                           capture_output=True, text=True)
     if proc.returncode != 0:  # the last line of a Python traceback names the error
         raise ToolFailed(status(proc) + (proc.stderr.strip().splitlines() or [""])[-1], failed=True)
@@ -274,9 +284,10 @@ def run_mesh(mesh, methods, args):
         for method in methods:
             try:
                 if method == "lowstretch":
-                    V, F, uv, seconds = run_ours(os.path.abspath(args.tool), mesh, shlex.split(args.tool_args), tmp)
+                    tool_args = shlex.split(args.tool_args) + ([] if args.gutter is None else ["--gutter", str(args.gutter)])
+                    V, F, uv, seconds = run_ours(os.path.abspath(args.tool), mesh, tool_args, tmp)
                 else:
-                    V, F, uv, seconds = run_peer(method, mesh, V_in, tmp)
+                    V, F, uv, seconds = run_peer(method, mesh, V_in, tmp, args.gutter)
                 results[method] = dict(atlas_metrics(V, F, uv), seconds=seconds, missing=len(F_in) - len(F))
                 row = cells(results[method])
             except ToolFailed as failure:
@@ -291,7 +302,7 @@ def run_mesh(mesh, methods, args):
 
 def main():
     if len(sys.argv) > 1 and sys.argv[1] == "--worker":
-        return worker(*sys.argv[2:5])
+        return worker(*sys.argv[2:6])
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--tool", required=True, help="the lowstretch binary")
     parser.add_argument("--venv", default="~/.cache/filter_lowstretch/atlas-venv")
@@ -300,6 +311,7 @@ def main():
     parser.add_argument("--skip-uvatlas", action="store_true", help="UVAtlas takes 1-40 s per mesh")
     parser.add_argument("--ours-only", action="store_true", help="no peers (tuning runs)")
     parser.add_argument("--xatlas-brute-force", action="store_true", help="also xatlas with its brute-force packer")
+    parser.add_argument("--gutter", type=float, help="texels between charts for all three tools (default: each its own)")
     parser.add_argument("meshes", nargs="+", metavar="MESH")
     argv = sys.argv[1:]
     if "--tool-args" in argv[:-1]:  # so that a value starting with "--" is taken as the value
