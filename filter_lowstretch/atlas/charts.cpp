@@ -68,10 +68,13 @@ Eigen::MatrixXd unit_box_of_used(const Eigen::MatrixXd& V, const Eigen::MatrixXi
   return scaled;
 }
 
-// The least efficiency merged charts keep, given the unmerged atlas's.
+// The least efficiency merged charts keep, given the unmerged atlas's. With fewer_seams, an
+// unmerged atlas already below the floor (tiny parts or a wide gutter take the texture) is merged
+// while it keeps its own efficiency, rather than not at all.
 double least_efficiency(const ChartOptions& o, double unmerged) {
   if (o.min_efficiency > 0) return o.min_efficiency;
-  return std::max(kTuning.merge_floor[o.fewer_seams], kTuning.merge_keeps[o.fewer_seams] * unmerged);
+  const double floor = o.fewer_seams ? std::min(kTuning.merge_floor[1], unmerged) : kTuning.merge_floor[0];
+  return std::max(floor, kTuning.merge_keeps[o.fewer_seams] * unmerged);
 }
 
 Error check_chart_options(const ChartOptions& o) {
