@@ -48,7 +48,8 @@ std::vector<OptionRow> make_table() {
        [](const ChartOptions& o) { return o.max_stretch; }, [](ChartOptions& o, double v) { o.max_stretch = v; }},
       {"fewer_seams", "--fewer-seams", "fewerSeams", "Fewer seams", OptionKind::Switch, {}, {}, "", kToolAndFilter,
        "Charts: merge more charts, for seams about as short as UVAtlas's: the atlas keeps a texture efficiency "
-       "(coverage / L2^2) of 0.55 and 75% of the unmerged atlas's, instead of 0.61 and 90%, merged charts may keep a "
+       "(coverage / L2^2) of 0.55 (or the unmerged atlas's, if lower) and 75% of the unmerged atlas's, instead of 0.61 "
+       "and 90%, merged charts may keep a "
        "free boundary, packed by their outlines, and (up to 100,000 faces) every chart is refined as Refine stretch "
        "does, so charts stretch more and the atlas takes longer.",
        [](const ChartOptions& o) { return double(o.fewer_seams); }, [](ChartOptions& o, double v) { o.fewer_seams = v != 0; }},
