@@ -84,6 +84,23 @@ Mesh joined(const Mesh& a, const Mesh& b, double scale, const Eigen::RowVector3d
   return m;
 }
 
+Mesh with_specks(const Mesh& m, int count, int per_row, double first_x) {
+  Mesh out;
+  out.V.resize(m.V.rows() + 3 * count, 3);
+  out.F.resize(m.F.rows() + count, 3);
+  out.V.topRows(m.V.rows()) = m.V;
+  out.F.topRows(m.F.rows()) = m.F;
+  for (int i = 0; i < count; ++i) {
+    const Eigen::RowVector3d at(first_x + i % per_row, i / per_row, 0);
+    const Eigen::Index v = m.V.rows() + 3 * i;
+    out.V.row(v) = at;
+    out.V.row(v + 1) = at + Eigen::RowVector3d(0.01, 0, 0);
+    out.V.row(v + 2) = at + Eigen::RowVector3d(0, 0.01, 0);
+    out.F.row(m.F.rows() + i) << int(v), int(v + 1), int(v + 2);
+  }
+  return out;
+}
+
 Mesh soup(const Mesh& mesh) {
   Mesh m;
   m.V.resize(3 * mesh.F.rows(), 3);

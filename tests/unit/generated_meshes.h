@@ -37,6 +37,9 @@ Mesh double_torus();
 Mesh jagged_band(int columns);
 // a's vertices and faces, then b's, b scaled by `scale` and moved by `offset`: one more component.
 Mesh joined(const Mesh& a, const Mesh& b, double scale, const Eigen::RowVector3d& offset);
+// m with `count` specks of scan debris after it: loose right triangles 0.01 on a side, in rows of
+// `per_row` one unit apart, the first at (first_x, 0, 0).
+Mesh with_specks(const Mesh& m, int count, int per_row, double first_x);
 // The same faces, each with three vertices of its own at its corners' positions: a triangle
 // soup, as STL files store a mesh.
 Mesh soup(const Mesh& mesh);

@@ -96,12 +96,7 @@ TEST(LayOutCharts, TinyPartsThatTakeMuchOfTheTextureAreNoted) {
     for (Eigen::Index f = 0; f < sphere_faces; ++f) area += signed_area(corner(r, f, 0), corner(r, f, 1), corner(r, f, 2));
     return area;
   };
-  testmesh::Mesh speck;
-  speck.V.resize(3, 3);
-  speck.V << 0, 0, 0, 0.01, 0, 0, 0, 0.01, 0;
-  speck.F.resize(1, 3);
-  speck.F << 0, 1, 2;
-  for (int i = 0; i < 4000; ++i) m = testmesh::joined(m, speck, 1, Eigen::RowVector3d(2 + i % 64, i / 64, 0));
+  m = testmesh::with_specks(m, 4000, 64, 2);
   const ChartsResult r = bounded_atlas(m);
   ASSERT_FALSE(r.error) << message(r.error);
   EXPECT_GE(r.charts.size(), 4001u);  // the sphere, and a chart per speck
@@ -113,13 +108,7 @@ TEST(LayOutCharts, TinyPartsThatTakeMuchOfTheTextureAreNoted) {
 // on a 128-texel texture with a 3-texel gutter): packed by their outlines, which need no such
 // floor, instead of refused.
 TEST(LayOutCharts, MoreTinyPartsThanTheTilingHasCellsForArePackedByTheirOutlines) {
-  testmesh::Mesh m = testmesh::sphere(16, 24);
-  testmesh::Mesh speck;
-  speck.V.resize(3, 3);
-  speck.V << 0, 0, 0, 0.01, 0, 0, 0, 0.01, 0;
-  speck.F.resize(1, 3);
-  speck.F << 0, 1, 2;
-  for (int i = 0; i < 500; ++i) m = testmesh::joined(m, speck, 1, Eigen::RowVector3d(2 + i % 25, i / 25, 0));
+  const testmesh::Mesh m = testmesh::with_specks(testmesh::sphere(16, 24), 500, 25, 2);
   ChartOptions options;
   options.non_disk = NonDisk::Atlas;
   options.texture_size = 128;

@@ -165,13 +165,7 @@ TEST(MergeNeighbours, TheAtlasKeepsTheLeastEfficiencyWithShorterSeams) {
 // (0.55). Fewer seams still merges its charts, keeping the unmerged atlas's efficiency, as its note
 // says; by default nothing is merged below the floor.
 TEST(MergeNeighbours, FewerSeamsMergesAnAtlasThatDebrisKeepsBelowTheFloor) {
-  testmesh::Mesh m = testmesh::torus(32, 16);
-  testmesh::Mesh speck;
-  speck.V.resize(3, 3);
-  speck.V << 0, 0, 0, 0.01, 0, 0, 0, 0.01, 0;
-  speck.F.resize(1, 3);
-  speck.F << 0, 1, 2;
-  for (int i = 0; i < 300; ++i) m = testmesh::joined(m, speck, 1, Eigen::RowVector3d(3 + i % 20, i / 20, 0));
+  const testmesh::Mesh m = testmesh::with_specks(testmesh::torus(32, 16), 300, 20, 3);
   ChartOptions options;
   options.non_disk = NonDisk::Atlas;
   options.texture_size = 256;
