@@ -107,10 +107,8 @@ def worker(name, mesh_path, out, gutter="none"):
         mesh.vertex.positions = o3d.core.Tensor(V.astype(np.float32))
         mesh.triangle.indices = o3d.core.Tensor(F.astype(np.int32))
         start = time.perf_counter()
-        if gutter == "none":
-            mesh.compute_uvatlas(size=1024)  # defaults: gutter 1, max_stretch 1/6
-        else:
-            mesh.compute_uvatlas(size=1024, gutter=float(gutter))
+        own = {} if gutter == "none" else {"gutter": float(gutter)}
+        mesh.compute_uvatlas(size=1024, **own)  # defaults: gutter 1, max_stretch 1/6
         seconds = time.perf_counter() - start
         faces, corner_uv = F, mesh.triangle.texture_uvs.numpy()
     np.savez(out, faces=faces, uv=corner_uv, seconds=seconds)
