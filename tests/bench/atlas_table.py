@@ -5,11 +5,12 @@ measurement of xatlas and UVAtlas (listed below).
 
 usage: atlas_table.py --tool build/lowstretch --venv ~/.cache/filter_lowstretch/atlas-venv
                       [--tool-args "--atlas"] [--markdown] [--skip-uvatlas] [--xatlas-brute-force]
-                      [--gutter G] MESH...
+                      [--gutter G] [--peer-runs N] MESH...
 
 xatlas runs with its defaults; --xatlas-brute-force adds a row of xatlas with its brute-force
-packer (PackOptions.bruteForce), the slower and tighter one. Each tool keeps its own gutter between
-charts (ours 2 texels of 1024, UVAtlas 1, xatlas none) unless --gutter G gives all three the same:
+packer (PackOptions.bruteForce), the slower and tighter one. --peer-runs N runs each peer N times
+and gives each of its columns' median: UVAtlas's atlas changes from run to run. Each tool keeps
+its own gutter between charts (ours 2 texels of 1024, UVAtlas 1, xatlas none) unless --gutter G gives all three the same:
 ours --gutter G, xatlas PackOptions.padding G (whole texels of its about 1024), UVAtlas gutter G.
 
 Re-runs itself under the venv's python (made if missing, with PACKAGES; Open3D also needs Debian's
@@ -274,6 +275,12 @@ def summary(name, results):
     return text + f"; flips, zero-area, overlap all zero: {yes[ours['flips'] == ours['zero'] == ours['overlap'] == 0]}"
 
 
+def column_medians(runs):
+    """Each column's median over a peer's runs (UVAtlas gives another atlas from run to run); of an
+    even count, the lower middle value."""
+    return {key: sorted(run[key] for run in runs)[(len(runs) - 1) // 2] for key in runs[0]}
+
+
 def run_mesh(mesh, methods, args):
     """The table rows of one mesh, the metrics (or the failure text) of each method, the failures."""
     name, (V_in, F_in) = os.path.basename(mesh), read_mesh(mesh)
@@ -284,9 +291,13 @@ def run_mesh(mesh, methods, args):
                 if method == "lowstretch":
                     tool_args = shlex.split(args.tool_args) + ([] if args.gutter is None else ["--gutter", str(args.gutter)])
                     V, F, uv, seconds = run_ours(os.path.abspath(args.tool), mesh, tool_args, tmp)
+                    results[method] = dict(atlas_metrics(V, F, uv), seconds=seconds, missing=len(F_in) - len(F))
                 else:
-                    V, F, uv, seconds = run_peer(method, mesh, V_in, tmp, args.gutter)
-                results[method] = dict(atlas_metrics(V, F, uv), seconds=seconds, missing=len(F_in) - len(F))
+                    runs = []
+                    for _ in range(args.peer_runs):
+                        V, F, uv, seconds = run_peer(method, mesh, V_in, tmp, args.gutter)
+                        runs.append(dict(atlas_metrics(V, F, uv), seconds=seconds, missing=len(F_in) - len(F)))
+                    results[method] = column_medians(runs)
                 row = cells(results[method])
             except ToolFailed as failure:
                 results[method] = str(failure)
@@ -309,6 +320,8 @@ def main():
     parser.add_argument("--skip-uvatlas", action="store_true", help="UVAtlas takes 1-40 s per mesh")
     parser.add_argument("--ours-only", action="store_true", help="no peers (tuning runs)")
     parser.add_argument("--xatlas-brute-force", action="store_true", help="also xatlas with its brute-force packer")
+    parser.add_argument("--peer-runs", type=int, default=1, metavar="N",
+                        help="run each peer N times and give each column's median (UVAtlas varies from run to run)")
     parser.add_argument("--gutter", type=float, help="texels between charts for all three tools (default: each its own)")
     parser.add_argument("meshes", nargs="+", metavar="MESH")
     argv = sys.argv[1:]
@@ -316,6 +329,8 @@ def main():
         k = argv.index("--tool-args")
         argv[k:k + 2] = ["--tool-args=" + argv[k + 1]]
     args = parser.parse_args(argv)
+    if args.peer_runs < 1:
+        parser.error("--peer-runs must be at least 1")
     venv = os.path.expanduser(args.venv)
     if os.path.realpath(sys.prefix) != os.path.realpath(venv):  # numpy and the peers live in the venv
         python = ensure_venv(venv, not args.skip_uvatlas)
