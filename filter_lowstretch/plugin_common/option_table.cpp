@@ -48,7 +48,7 @@ std::vector<OptionRow> make_table() {
        [](const ChartOptions& o) { return o.max_stretch; }, [](ChartOptions& o, double v) { o.max_stretch = v; }},
       {"fewer_seams", "--fewer-seams", "fewerSeams", "Fewer seams", OptionKind::Switch, {}, {}, "", kToolAndFilter,
        "Charts: merge more charts, for seams about as short as UVAtlas's: the atlas keeps a texture efficiency "
-       "(coverage / L2^2) of 0.55 (or the unmerged atlas's, if lower) and 75% of the unmerged atlas's, instead of 0.61 "
+       "(coverage / L2^2) of 0.555 (or the unmerged atlas's, if lower) and 75% of the unmerged atlas's, instead of 0.61 "
        "and 90%, merged charts may keep a "
        "free boundary, packed by their outlines, and (up to 100,000 faces) every chart is refined as Refine stretch "
        "does, so charts stretch more and the atlas takes longer.",
@@ -76,7 +76,7 @@ std::vector<OptionRow> make_table() {
       {"min_efficiency", "--min-efficiency", "", "", OptionKind::Real, {}, {}, "0 to 1", kToolOnly,
        "Charts: once cut, neighbouring charts are merged, those saving the most seam for the texture they cost "
        "first, while the atlas keeps this texture efficiency (coverage / L2^2); 1 merges none. Lower gives shorter "
-       "seams and more stretch. 0: at least 0.61 and 90% of the unmerged atlas's (0.55 and 75% with Fewer seams).",
+       "seams and more stretch. 0: at least 0.61 and 90% of the unmerged atlas's (0.555 and 75% with Fewer seams).",
        [](const ChartOptions& o) { return o.min_efficiency; }, [](ChartOptions& o, double v) { o.min_efficiency = v; }},
       {"solver", "--solver", "", "", OptionKind::Choice, {"amg", "direct"}, {}, "", kToolOnly,
        "How each pass is solved: algebraic multigrid with BiCGStab (falling back to the sparse LU for a pass "

@@ -162,7 +162,7 @@ TEST(MergeNeighbours, TheAtlasKeepsTheLeastEfficiencyWithShorterSeams) {
 }
 
 // Specks of debris, each given a cell of the tiling, keep a torus's atlas below Fewer seams's floor
-// (0.55). Fewer seams still merges its charts, keeping the unmerged atlas's efficiency, as its note
+// (0.555). Fewer seams still merges its charts, keeping the unmerged atlas's efficiency, as its note
 // says; by default nothing is merged below the floor.
 TEST(MergeNeighbours, FewerSeamsMergesAnAtlasThatDebrisKeepsBelowTheFloor) {
   const testmesh::Mesh m = testmesh::with_specks(testmesh::torus(32, 16), 300, 20, 3);
