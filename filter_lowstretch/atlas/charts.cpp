@@ -601,7 +601,7 @@ ChartsResult without_zero_area_parts(const Eigen::MatrixXd& V, const Eigen::Matr
   for (size_t j = 0; j < mapped.size(); ++j) mapped_F.row(Eigen::Index(j)) = F.row(mapped[j]);
   ChartsResult result = disk_or_atlas(V, mapped_F, options, own_copies);
   if (result.error) return result;
-  result = with_zero_area_faces(std::move(result), F, mapped, zero_area, options);
+  result = with_zero_area_faces(std::move(result), V, F, mapped, zero_area, options);
   result.seconds_total = seconds_since(start);
   return result;
 }

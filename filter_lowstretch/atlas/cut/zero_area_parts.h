@@ -14,10 +14,12 @@ namespace lowstretch {
 std::vector<int> faces_of_zero_area_parts(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F);
 
 // The atlas of the other faces (`mapped`: the input face of each of its rows) given back for all
-// of F: each face of a zero-area part sits on one point, the texture coordinate of its first
-// vertex where a mapped face has one, else the corner of the area inside the gutter. They form one
-// more chart, of zero stretch.
-ChartsResult with_zero_area_faces(ChartsResult atlas, const Eigen::MatrixXi& F, const std::vector<int>& mapped,
-                                  const std::vector<int>& zero_area, const ChartOptions& options);
+// of F. A face of a zero-area part takes the texture coordinates at its corners' positions in the
+// first chart that has all three with zero area (a collapsed edge's faces: no seam runs around
+// them) and joins that chart; any other sits on one point, the texture coordinate of its first
+// vertex where a mapped face has one, else the corner of the area inside the gutter. Those form
+// one more chart, of zero stretch.
+ChartsResult with_zero_area_faces(ChartsResult atlas, const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
+                                  const std::vector<int>& mapped, const std::vector<int>& zero_area, const ChartOptions& options);
 
 }  // namespace lowstretch
