@@ -142,9 +142,9 @@ struct AtlasTuning {
   // across its edges would give much of that away. Fewer seams: about UVAtlas's efficiency (which
   // has a third to a half of the default atlas's seams): 0.555 dominated UVAtlas (its median over
   // runs) on the table and the generated slivers scan, which 0.55 merged past UVAtlas's efficiency;
-  // 0.5 and 0.57 lost on more of the table. Below its floor, fewer_seams keeps the unmerged atlas's efficiency: on the
-  // debris30000 scan (0.25 tiled) it merged nothing; by default, bull's charts would then merge,
-  // at efficiency 0.611 against 0.668.
+  // 0.5 and 0.57 lost on more of the table. Below its floor, fewer_seams keeps the unmerged atlas's
+  // efficiency: on the debris30000 scan (0.25 tiled) it merged nothing; by default, bull's charts
+  // would then merge, at efficiency 0.611 against 0.668.
   double merge_floor[2] = {0.61, 0.555};
   double merge_keeps[2] = {0.9, 0.75};
   // Merging maps unions of at most this many times the mesh's faces in all, or least_merge_work

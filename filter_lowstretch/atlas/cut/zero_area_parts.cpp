@@ -113,8 +113,8 @@ ChartsResult with_zero_area_faces(ChartsResult atlas, const Eigen::MatrixXd& V, 
   atlas.notes.insert(atlas.notes.begin(), std::to_string(zero_area.size()) +
                                               (zero_area.size() == 1 ? " face" : " faces") +
                                               " in parts of zero 3D area (no surface to texture) get zero-area texture "
-                                              "coordinates: their neighbours' where one chart holds all three of their "
-                                              "vertices (no seam around them), else one point each");
+                                              "coordinates: their neighbours' where one chart has all three corners, on "
+                                              "zero area (no seam around them), else one point each");
   return atlas;
 }
 
