@@ -10,8 +10,9 @@ usage: atlas_table.py --tool build/lowstretch --venv ~/.cache/filter_lowstretch/
 xatlas runs with its defaults; --xatlas-brute-force adds a row of xatlas with its brute-force
 packer (PackOptions.bruteForce), the slower and tighter one. --peer-runs N runs each peer N times
 and gives each of its columns' median: UVAtlas's atlas changes from run to run. Each tool keeps
-its own gutter between charts (ours 2 texels of 1024, UVAtlas 1, xatlas none) unless --gutter G gives all three the same:
-ours --gutter G, xatlas PackOptions.padding G (whole texels of its about 1024), UVAtlas gutter G.
+its own gutter between charts (ours 2 texels of 1024, UVAtlas 1, xatlas none) unless --gutter G
+gives all three the same: ours --gutter G, xatlas PackOptions.padding G (whole texels of its about
+1024), UVAtlas gutter G.
 
 Re-runs itself under the venv's python (made if missing, with PACKAGES; Open3D also needs Debian's
 libusb-1.0-0); each peer runs in a child process, so that a native crash is reported. Columns:

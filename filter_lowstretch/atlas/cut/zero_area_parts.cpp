@@ -53,9 +53,8 @@ int chart_holding(const UvInCharts& uv_in_chart, const Eigen::MatrixXd& V, const
           ++held;
           break;
         }
-    if (held < 3) continue;
-    const Eigen::RowVector2d u = corners[1] - corners[0], w = corners[2] - corners[0];
-    if (u(0) * w(1) - u(1) * w(0) == 0) return first.first;
+    if (held == 3 && signed_uv_area(corners[0].transpose(), corners[1].transpose(), corners[2].transpose()) == 0)
+      return first.first;
   }
   return -1;
 }
