@@ -35,9 +35,6 @@ struct Options {
   // gives the same map (the atlas's charts, whose maps decide where it cuts and merges).
   int refine_iterations = 0;
   double refine_least_area = 0;  // RefineOptions::least_area_share
-  // With the natural boundary: the refinement moves the boundary too (RefineOptions::free_boundary).
-  // The map may then overlap itself where its outline crosses: callers check.
-  bool refine_free_boundary = false;
   // Called with a fraction in [0, 1] and the current stage; return false to cancel the run.
   std::function<bool(double fraction, const char* stage)> progress;
   // Called after every pass with that pass's UV (rows as in V, unused rows 0), for callers that

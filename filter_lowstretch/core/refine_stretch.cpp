@@ -54,24 +54,14 @@ Eigen::Matrix2d jacobian(const FlatTriangle& t, const Eigen::MatrixXd& uv, const
   return J;
 }
 
-// Energy A |J|^2 / (2 det^2), plus area_weight times the UV area; infinite when det <= 0. Adds
-// the gradient to `grad` if given.
+// Energy A |J|^2 / (2 det^2); infinite when det <= 0. Adds the gradient to `grad` if given.
 double energy(const DiskMesh& disk, const std::vector<FlatTriangle>& flat, const Eigen::MatrixXd& uv,
-              Eigen::MatrixXd* grad, double area_weight = 0) {
+              Eigen::MatrixXd* grad) {
   double total = 0;
   if (grad) grad->setZero(uv.rows(), 2);
   for (Eigen::Index f = 0; f < disk.F.rows(); ++f) {
     const FlatTriangle& t = flat[size_t(f)];
     const Eigen::RowVector3i face = disk.F.row(f);
-    if (area_weight > 0) {
-      total += area_weight * signed_uv_area(uv.row(face(0)), uv.row(face(1)), uv.row(face(2)));
-      // d(area)/d(corner k) = (v[k+1] - v[k+2], u[k+2] - u[k+1]) / 2
-      if (grad)
-        for (int k = 0; k < 3; ++k) {
-          const Eigen::RowVector2d a = uv.row(face((k + 1) % 3)), b = uv.row(face((k + 2) % 3));
-          grad->row(face(k)) += 0.5 * area_weight * Eigen::RowVector2d(a.y() - b.y(), b.x() - a.x());
-        }
-    }
     // A zero-area 3D triangle carries no stretch, but its UV triangle must keep its least area too.
     if (!(t.area > 0)) {
       if (!(signed_uv_area(uv.row(face(0)), uv.row(face(1)), uv.row(face(2))) > t.least_uv_area))
@@ -214,18 +204,16 @@ Eigen::MatrixXd refine_stretch(const DiskMesh& disk, const Eigen::MatrixXd& uv0,
   const double least = options.least_area_share * uv_area.sum();
   for (Eigen::Index f = 0; f < disk.F.rows(); ++f) flat[size_t(f)].least_uv_area = std::min(least, 0.5 * uv_area(f));
   Eigen::MatrixXd uv = uv0;
-  const double stretch_energy = energy(disk, flat, uv, nullptr);
+  double e = energy(disk, flat, uv, nullptr);
   report = RefineReport();
-  report.energy_before = report.energy_after = stretch_energy;
-  if (!std::isfinite(stretch_energy)) return uv;
+  report.energy_before = report.energy_after = e;
+  if (!std::isfinite(e)) return uv;
   report.started = true;
-  const double area_weight = options.free_boundary ? stretch_energy / uv_area.sum() : 0;
-  double e = energy(disk, flat, uv, nullptr, area_weight);
   const int n = int(disk.V.rows());
   std::vector<int> unknown(size_t(n), -1);
   int count = 0;
   for (int i = 0; i < n; ++i)
-    if (options.free_boundary || !disk.is_boundary[size_t(i)]) unknown[size_t(i)] = count++;
+    if (!disk.is_boundary[size_t(i)]) unknown[size_t(i)] = count++;
   if (count == 0) return uv;
   HessianLayout layout = hessian_layout(disk, unknown, count);
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> newton;  // SuiteSparse's CHOLMOD
@@ -241,7 +229,7 @@ Eigen::MatrixXd refine_stretch(const DiskMesh& disk, const Eigen::MatrixXd& uv0,
     const Clock::time_point iteration_start = Clock::now();
     // Stop before an iteration that would likely end past the budget.
     if (std::chrono::duration<double>(iteration_start - start).count() + 1.2 * last_iteration > options.max_seconds) break;
-    energy(disk, flat, uv, &grad, area_weight);
+    energy(disk, flat, uv, &grad);
     for (int i = 0; i < n; ++i)
       if (unknown[size_t(i)] >= 0) g.segment<2>(2 * unknown[size_t(i)]) = grad.row(i).transpose();
     fill_projected_hessian(disk, flat, uv, layout);
@@ -255,7 +243,7 @@ Eigen::MatrixXd refine_stretch(const DiskMesh& disk, const Eigen::MatrixXd& uv0,
     double t = std::min(1.0, 0.9 * largest_safe_step(disk, flat, uv, d));
     double next = std::numeric_limits<double>::infinity();
     for (int tries = 0; tries < 40; ++tries, t /= 2) {
-      next = energy(disk, flat, uv + t * d, nullptr, area_weight);
+      next = energy(disk, flat, uv + t * d, nullptr);
       if (next <= e + 1e-4 * t * slope) break;
     }
     if (!(next < e)) break;
@@ -266,7 +254,7 @@ Eigen::MatrixXd refine_stretch(const DiskMesh& disk, const Eigen::MatrixXd& uv0,
     last_iteration = std::chrono::duration<double>(Clock::now() - iteration_start).count();
     if (decrease < options.relative_decrease) break;
   }
-  report.energy_after = energy(disk, flat, uv, nullptr);
+  report.energy_after = e;
   report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return uv;
 }

@@ -1,12 +1,12 @@
 // An optional step after the paper's method: minimizes the L2 stretch energy
-// sum_T A3D(T) sigma(T)^2 directly, boundary fixed (or free: RefineOptions), never letting a UV
-// triangle flip or collapse. sigma(T)^2 = |J^-1|_F^2 / 2, with J the 2x2 Jacobian of the map
-// from the triangle (in a plane of its own) to UV, so the energy grows without bound as a
-// triangle collapses: a step that keeps every triangle positive, and lowers the energy, keeps the
-// map valid. Each step is a projected Newton step (per-triangle Hessians with their negative
-// eigenvalues clamped, one CHOLMOD Cholesky factorization with the pattern analysed once), cut to
-// 90% of the largest step that keeps every triangle above its least area (RefineOptions), then
-// backtracked until the energy falls enough (Armijo).
+// sum_T A3D(T) sigma(T)^2 directly, boundary fixed, never letting a UV triangle flip or collapse.
+// sigma(T)^2 = |J^-1|_F^2 / 2, with J the 2x2 Jacobian of the map from the triangle (in a plane
+// of its own) to UV, so the energy grows without bound as a triangle collapses: a step that keeps
+// every triangle positive, and lowers the energy, keeps the map valid. Each step is a projected
+// Newton step (per-triangle Hessians with their negative eigenvalues clamped, one CHOLMOD Cholesky
+// factorization with the pattern analysed once), cut to 90% of the largest step that keeps every
+// triangle above its least area (RefineOptions), then backtracked until the energy falls enough
+// (Armijo).
 #pragma once
 #include <Eigen/Core>
 
@@ -22,11 +22,6 @@ struct RefineOptions {
   // less: a sliver's stretch weighs next to nothing, and the energy alone shrinks its UV triangle
   // toward its near-zero 3D area, past what a texture resolves (an atlas's charts set it).
   double least_area_share = 0;
-  // The boundary moves too. The energy alone would grow the map without end (stretch falls as
-  // the UV area grows), so lambda A_uv is added, lambda = E / A_uv at the start: where E + lambda
-  // A_uv is least, E A_uv (the L2 stretch with the map's scale taken out) is stationary. The
-  // area term's Hessian (indefinite) is left out of the Newton steps; the line search holds.
-  bool free_boundary = false;
 };
 
 struct RefineReport {
@@ -36,8 +31,7 @@ struct RefineReport {
   bool started = false;  // false when uv has a flipped or zero-area triangle: nothing to refine
 };
 
-// uv: n x 2 (compact rows of disk), every triangle positive; boundary rows are kept unless
-// options.free_boundary. Returns
+// uv: n x 2 (compact rows of disk), every triangle positive; boundary rows are kept. Returns
 // the refined map (uv itself when it cannot start).
 Eigen::MatrixXd refine_stretch(const DiskMesh& disk, const Eigen::MatrixXd& uv, const RefineOptions& options,
                                RefineReport& report);
