@@ -50,7 +50,7 @@ std::vector<OptionRow> make_table() {
        "Charts: merge more charts, for seams about as short as UVAtlas's: the atlas keeps a texture efficiency "
        "(coverage / L2^2) of 0.555 (or the unmerged atlas's, if lower) and 75% of the unmerged atlas's, instead of 0.61 "
        "and 90%, merged charts may keep a "
-       "free boundary, packed by their outlines, and (up to 100,000 faces) every chart is refined as Refine stretch "
+       "free boundary, packed by their outlines, and (up to 200,000 faces) every chart is refined as Refine stretch "
        "does, so charts stretch more and the atlas takes longer.",
        [](const ChartOptions& o) { return double(o.fewer_seams); }, [](ChartOptions& o, double v) { o.fewer_seams = v != 0; }},
       {"texture_size", "--texture-size", "textureSize", "Texture size", OptionKind::Whole, {}, {}, "8 to 65536",

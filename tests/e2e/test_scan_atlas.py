@@ -3,10 +3,11 @@ puts fins (non-manifold edges), zero-area slivers, duplicate vertices, dust, hol
 edges into a closed mesh; TestReconstructions: tests/bench/make_reconstructions.py makes MeshLab's
 ball pivoting, VCG and screened Poisson reconstructions and marching cubes on a quantized signed
 distance of it (run by --scan-python, a Python with numpy, pymeshlab and scikit-image). For each
-file (test_atlas[NAME]; test_fewer_seams_atlas[NAME] adds --fewer-seams on two)
-`lowstretch FILE -o out.obj --json` must exit 0, write every input face with texture coordinates
-inside the gutter, and leave no flipped UV triangle and no zero-area one on a face with 3D area
-(a face of zero 3D area may have zero UV area, never a negative one), as read back from the OBJ;
+file (test_atlas[NAME]; test_fewer_seams_atlas adds --fewer-seams on two defects and on ball
+pivoting) `lowstretch FILE -o out.obj --json` must exit 0, write every input face with texture
+coordinates inside the gutter, and leave no flipped UV triangle and no zero-area one on a face with
+3D area (a face of zero 3D area may have zero UV area, never a negative one), as read back from
+the OBJ;
 the triangle soup of make_defects.py is refused with the weld message
 (TestDefects::test_soup_refused). The closed mesh is CGAL's armadillo (--cgal-meshes).
 
@@ -122,3 +123,7 @@ class TestReconstructions:
     @pytest.mark.parametrize("name", RECONSTRUCTIONS)
     def test_atlas(self, tool, scans, name):
         check_atlas(tool, str(scans / (name + ".off")), str(scans))
+
+    def test_fewer_seams_atlas(self, tool, scans):
+        # Above 100,000 faces and under Fewer seams' bound: its charts are refined, its unions freed.
+        check_atlas(tool, str(scans / "ball_pivoting.off"), str(scans), ["--fewer-seams"])
