@@ -7,8 +7,7 @@ file (test_atlas[NAME]; test_fewer_seams_atlas adds --fewer-seams on two defects
 pivoting) `lowstretch FILE -o out.obj --json` must exit 0, write every input face with texture
 coordinates inside the gutter, and leave no flipped UV triangle and no zero-area one on a face with
 3D area (a face of zero 3D area may have zero UV area, never a negative one), as read back from
-the OBJ;
-the triangle soup of make_defects.py is refused with the weld message
+the OBJ; the triangle soup of make_defects.py is refused with the weld message
 (TestDefects::test_soup_refused). The closed mesh is CGAL's armadillo (--cgal-meshes).
 
   python3 -B -m pytest -p no:cacheprovider tests/e2e/test_scan_atlas.py::TestDefects --tool build/lowstretch
@@ -125,5 +124,6 @@ class TestReconstructions:
         check_atlas(tool, str(scans / (name + ".off")), str(scans))
 
     def test_fewer_seams_atlas(self, tool, scans):
-        # Above 100,000 faces and under Fewer seams' bound: its charts are refined, its unions freed.
+        # The largest reconstruction under Fewer seams' face bound (kTuning.most_free_union_faces):
+        # its charts are refined and its unions freed at scan size.
         check_atlas(tool, str(scans / "ball_pivoting.off"), str(scans), ["--fewer-seams"])
