@@ -313,10 +313,20 @@ ChartsResult AtlasSearch::tile(std::vector<SolvedChart> charts) {
 }
 
 // `laid_out` (a tiling of `kept`) replaced by the same charts packed by outline where that uses
-// the texture better.
+// the texture better: as they are, or each mapped free where that stretches it less.
 void pack_by_outline_if_better(const AtlasSearch& s, const std::vector<SolvedChart>& kept, ChartsResult& laid_out) {
   if (kept.empty() || laid_out.error) return;
   ChartsResult packed = packed_by_outline(s, kept);
+  std::vector<SolvedChart> freed = kept;
+  if (free_where_it_stretches_less(freed, s.options) > 0) {
+    std::vector<int> all(freed.size());
+    std::iota(all.begin(), all.end(), 0);
+    ChartsResult free = atlas_of(std::move(freed), all, s.unit_V, s.F, s.unit, int(s.V.rows()), s.options);
+    if (!free.error && (packed.error || texture_efficiency(free) > texture_efficiency(packed))) {
+      free.notes.push_back("charts mapped free where that stretches them less");
+      packed = std::move(free);
+    }
+  }
   if (packed.error || !(texture_efficiency(packed) > texture_efficiency(laid_out))) return;
   packed.notes.push_back("every chart packed by its outline: efficiency " + number_text(texture_efficiency(packed)) +
                          " (coverage / L2^2) against " + number_text(texture_efficiency(laid_out)) + " tiled");

@@ -2,6 +2,8 @@
 // and charts that no rectangle fits keep their own shape.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string>
 #include <vector>
 
 #include "atlas/base/tuning.h"
@@ -71,4 +73,41 @@ TEST(FreeCharts, FlatFaceWithAHoleKeepsItsShape) {
     EXPECT_LT((linear_map(f) - first).norm(), 1e-5 * first.norm()) << "face " << f;
   }
   EXPECT_LT(r.charts[size_t(r.face_chart[0])].l2_stretch, 1.07);  // on its rectangle it had 1.07
+}
+
+// Packed by outline, a chart costs its own area, so every chart goes free where that stretches it
+// less: the flat tapered face seen along its normal (L2 1), the cap with the natural boundary. None
+// folds over itself, none stretches more than on its rectangle, and a chart already free is left.
+TEST(FreeCharts, ChartsAreFreedWhereThatStretchesThemLess) {
+  testmesh::Mesh web = testmesh::grid(12);
+  web.V.col(0) = (web.V.col(0).array() - 0.5) * (1 - 0.9 * web.V.col(1).array()) + 0.5;
+  std::vector<SolvedChart> charts = {solved_chart_of(web), solved_chart_of(testmesh::hemisphere(8, 16))};
+  std::vector<double> on_rectangle;
+  for (const SolvedChart& c : charts) {
+    ASSERT_FALSE(c.map.error);
+    ASSERT_FALSE(c.free_boundary);
+    on_rectangle.push_back(c.kept.l2_stretch);
+  }
+  EXPECT_EQ(free_where_it_stretches_less(charts, ChartOptions()), 2);
+  for (size_t c = 0; c < charts.size(); ++c) {
+    EXPECT_TRUE(charts[c].free_boundary) << "chart " << c;
+    EXPECT_LT(charts[c].kept.l2_stretch, on_rectangle[c]) << "chart " << c;
+    EXPECT_EQ(charts[c].kept.flipped + charts[c].kept.degenerate, 0) << "chart " << c;
+    EXPECT_FALSE(crosses_itself(charts[c])) << "chart " << c;
+  }
+  EXPECT_NEAR(charts[0].kept.l2_stretch, 1.0, 1e-9);
+  const double cap_freed = charts[1].kept.l2_stretch;
+  EXPECT_EQ(free_where_it_stretches_less(charts, ChartOptions()), 0);
+  EXPECT_EQ(charts[1].kept.l2_stretch, cap_freed);
+}
+
+// The genus-2 solid's atlas: its charts, freed where that stretches them less, pack by their
+// outlines better than tiled, and the layout stays valid (no flip, zero-area triangle or overlap).
+TEST(FreeCharts, AtlasPackedByOutlineWithChartsFreedIsValid) {
+  const testmesh::Mesh m = testmesh::double_torus();
+  const ChartsResult r = bounded_atlas(m);
+  expect_valid_layout(m.F, r);
+  EXPECT_TRUE(std::any_of(r.notes.begin(), r.notes.end(), [](const std::string& n) {
+    return n.find("charts mapped free where that stretches them less") != std::string::npos;
+  }));
 }

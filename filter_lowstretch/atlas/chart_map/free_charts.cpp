@@ -1,5 +1,6 @@
 #include "atlas/chart_map/free_charts.h"
 
+#include <algorithm>
 #include <utility>
 
 #include "atlas/base/tuning.h"
@@ -67,6 +68,26 @@ void free_the_charts_that_stretch(std::vector<SolvedChart>& charts, const ChartO
       chart = std::move(free);
     }
   });
+}
+
+int free_where_it_stretches_less(std::vector<SolvedChart>& charts, const ChartOptions& options) {
+  size_t faces = 0;
+  for (const SolvedChart& c : charts) faces += c.faces.size();
+  std::vector<char> freed(charts.size(), 0);
+  for_each_index(int(charts.size()), [&](int k, int) {
+    SolvedChart& chart = charts[size_t(k)];
+    if (chart.free_boundary) return;
+    for (const bool seen_along_normal : {false, true}) {
+      SolvedChart free = unmapped_copy(chart);
+      if (seen_along_normal) map_as_seen_along_normal(free);
+      else solve_onto(free, for_share(options.disk, chart.faces.size(), faces), 0, true);
+      if (free.map.error || free.kept.flipped + free.kept.degenerate > 0) continue;
+      if (!(free.kept.l2_stretch < chart.kept.l2_stretch) || crosses_itself(free)) continue;
+      chart = std::move(free);
+      freed[size_t(k)] = 1;
+    }
+  });
+  return int(std::count(freed.begin(), freed.end(), 1));
 }
 
 void see_flat_charts_along_normal(std::vector<SolvedChart>& charts) {
