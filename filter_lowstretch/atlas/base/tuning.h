@@ -74,6 +74,10 @@ struct AtlasTuning {
   // How much better a free map must use its box: the rectangle's further passes and the free
   // chart's cell, rarely of its shape, eat smaller gains.
   double free_must_pay = 4;
+  // Packed by outline, a chart on its rectangle is tried free only above this L2 stretch: nearer
+  // 1, its box packs better than its free outline (the anchor's unmerged charts lost efficiency
+  // with every chart tried).
+  double free_above = 1.02;
   // A chart seen along its normal at this L2 stretch or less is flat (a face of a CAD part).
   double flat_below = 1.02;
   // The turns tried within a quarter turn: the best is at most half a step (0.7 degrees) off the

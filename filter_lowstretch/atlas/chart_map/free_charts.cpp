@@ -76,7 +76,7 @@ int free_where_it_stretches_less(std::vector<SolvedChart>& charts, const ChartOp
   std::vector<char> freed(charts.size(), 0);
   for_each_index(int(charts.size()), [&](int k, int) {
     SolvedChart& chart = charts[size_t(k)];
-    if (chart.free_boundary) return;
+    if (chart.free_boundary || !(chart.kept.l2_stretch > kTuning.free_above)) return;
     for (const bool seen_along_normal : {false, true}) {
       SolvedChart free = unmapped_copy(chart);
       if (seen_along_normal) map_as_seen_along_normal(free);
