@@ -312,13 +312,27 @@ ChartsResult AtlasSearch::tile(std::vector<SolvedChart> charts) {
   return packed;
 }
 
+// The L2 stretch of charts over their 3D area, as their maps measured them.
+double l2_of_charts(const std::vector<SolvedChart>& charts) {
+  double weighted = 0, area = 0;
+  for (const SolvedChart& c : charts) {
+    weighted += c.kept.area_3d * c.kept.l2_stretch * c.kept.l2_stretch;
+    area += c.kept.area_3d;
+  }
+  return area > 0 ? std::sqrt(weighted / area) : 0;
+}
+
 // `laid_out` (a tiling of `kept`) replaced by the same charts packed by outline where that uses
-// the texture better: as they are, or each mapped free where that stretches it less.
+// the texture better: as they are, or each mapped free where that stretches it less. Free outlines
+// pack no denser than boxes, so the freed charts are packed only if they would win at the
+// coverage the boxes reached.
 void pack_by_outline_if_better(const AtlasSearch& s, const std::vector<SolvedChart>& kept, ChartsResult& laid_out) {
   if (kept.empty() || laid_out.error) return;
   ChartsResult packed = packed_by_outline(s, kept);
   std::vector<SolvedChart> freed = kept;
-  if (free_where_it_stretches_less(freed, s.options) > 0) {
+  const double to_beat = packed.error ? texture_efficiency(laid_out) : std::max(texture_efficiency(packed), texture_efficiency(laid_out));
+  const double boxes_coverage = packed.error ? 1 : packed.coverage;
+  if (free_where_it_stretches_less(freed, s.options) > 0 && boxes_coverage / std::pow(l2_of_charts(freed), 2) > to_beat) {
     std::vector<int> all(freed.size());
     std::iota(all.begin(), all.end(), 0);
     ChartsResult free = atlas_of(std::move(freed), all, s.unit_V, s.F, s.unit, int(s.V.rows()), s.options);
