@@ -67,7 +67,7 @@ def runs(tool, mesh, V, tmp):
     for e in MIN_EFFICIENCY:
         yield "ours-sweep", f"--atlas --min-efficiency {e}", f"{e}", ours("--min-efficiency", str(e))
     for name, setting in (("xatlas", "default packer"), ("xatlas-bf", "brute-force packer")):
-        yield name, setting, "", (lambda name=name: at.run_peer(name, mesh, V, tmp)[:3])
+        yield name, setting, "", (lambda name=name: at.run_peer(name, mesh, V, tmp, None)[:3])
     for s in MAX_STRETCH:
         label = "1/6" if s == 1 / 6 else f"{s:g}"
         yield "uvatlas", f"max_stretch {label}" + (" (default)" if s == 1 / 6 else ""), label, \
