@@ -75,9 +75,10 @@ TEST(FreeCharts, FlatFaceWithAHoleKeepsItsShape) {
   EXPECT_LT(r.charts[size_t(r.face_chart[0])].l2_stretch, 1.07);  // on its rectangle it had 1.07
 }
 
-// Packed by outline, a chart costs its own area, so every chart goes free where that stretches it
-// less: the flat tapered face seen along its normal (L2 1), the cap with the natural boundary. None
-// folds over itself, none stretches more than on its rectangle, and a chart already free is left.
+// Packed by outline, a chart costs its own area, so every chart above kTuning.free_above goes free
+// where that stretches it less: the flat tapered face seen along its normal (L2 1), the cap with
+// the natural boundary. None folds over itself, none stretches more than on its rectangle, and a
+// chart already free is left.
 TEST(FreeCharts, ChartsAreFreedWhereThatStretchesThemLess) {
   testmesh::Mesh web = testmesh::grid(12);
   web.V.col(0) = (web.V.col(0).array() - 0.5) * (1 - 0.9 * web.V.col(1).array()) + 0.5;
@@ -86,6 +87,7 @@ TEST(FreeCharts, ChartsAreFreedWhereThatStretchesThemLess) {
   for (const SolvedChart& c : charts) {
     ASSERT_FALSE(c.map.error);
     ASSERT_FALSE(c.free_boundary);
+    ASSERT_GT(c.kept.l2_stretch, kTuning.free_above);
     on_rectangle.push_back(c.kept.l2_stretch);
   }
   EXPECT_EQ(free_where_it_stretches_less(charts, ChartOptions()), 2);
