@@ -76,10 +76,11 @@ Eigen::MatrixXd input_rows(const DiskMesh& disk, const Eigen::MatrixXd& uv, Eige
 
 // The metrics of one solved pass, with the time of each phase and what the solver did (the
 // caller adds the reweighting time and the pass number).
+// Without a reference, the stretch metrics only (Options::measure_distortions).
 PassMetrics measure_pass(const DiskMesh& disk, const Eigen::MatrixXd& uv, const FaceStretch& stretch,
-                         const SurfaceReference& reference, const SolveReport& solved) {
+                         const SurfaceReference* reference, const SolveReport& solved) {
   const Clock::time_point start = Clock::now();
-  PassMetrics m = measure(disk.F, disk.edges, uv, stretch, reference);
+  PassMetrics m = reference ? measure(disk.F, disk.edges, uv, stretch, *reference) : measure_stretch(stretch);
   m.seconds_metrics = seconds_since(start);
   m.seconds_assembly = solved.seconds_assembly;
   m.seconds_factorization = solved.seconds_setup;
@@ -175,7 +176,8 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
   std::vector<double> weights = noted_initial_weights(disk, options.weights, result.notes);
 
   LaplacianSolver solver(disk, options.solver);
-  const SurfaceReference reference = surface_reference(disk.V, disk.F, disk.edges);
+  SurfaceReference reference;
+  if (options.measure_distortions) reference = surface_reference(disk.V, disk.F, disk.edges);
   const int n = int(disk.V.rows());
   Eigen::MatrixXd uv, best_uv;
   FaceStretch stretch, best_stretch;
@@ -190,7 +192,7 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
     if (!solver.solve(weights, boundary_uv, uv) || !uv.allFinite())
       return failed({ErrorCode::SolverFailed, pass, "singular or non-finite system"});
     stretch = face_stretch(disk.V, disk.F, uv);
-    PassMetrics metrics = measure_pass(disk, uv, stretch, reference, solver.report());
+    PassMetrics metrics = measure_pass(disk, uv, stretch, options.measure_distortions ? &reference : nullptr, solver.report());
     metrics.pass = pass;
     metrics.seconds_assembly += reweighting;
     metrics.seconds = seconds_since(pass_start);

@@ -40,6 +40,9 @@ struct Options {
   // Called after every pass with that pass's UV (rows as in V, unused rows 0), for callers that
   // measure passes their own way: charts measure each pass over the real faces only.
   std::function<void(int pass, const Eigen::MatrixXd& uv)> pass_uv;
+  // false: each pass measures its stretch and flips only, not the edge, angle and area distortions
+  // (callers that measure passes their own way need none of them).
+  bool measure_distortions = true;
 };
 
 struct Result {

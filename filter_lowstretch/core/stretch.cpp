@@ -126,19 +126,24 @@ PassMetrics measure(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Ei
   return measure(F, edges, UV, s, surface_reference(V, F, edges));
 }
 
-PassMetrics measure(const Eigen::MatrixXi& F, const Eigen::MatrixXi& edges, const Eigen::MatrixXd& UV, const FaceStretch& s,
-                    const SurfaceReference& reference) {
+PassMetrics measure_stretch(const FaceStretch& s) {
   PassMetrics m;
   m.flipped = s.flipped;
   m.degenerate = s.degenerate;
-  const Eigen::Index nf = F.rows();
-  const double total_3d = s.area_3d.sum(), total_uv = s.area_uv.cwiseAbs().sum();
   if (m.flipped + m.degenerate > 0) {
     m.l2_stretch = m.linf_stretch = kInf;
   } else {
     m.l2_stretch = l2_stretch(s);
     m.linf_stretch = s.normalization * s.gamma.maxCoeff();
   }
+  return m;
+}
+
+PassMetrics measure(const Eigen::MatrixXi& F, const Eigen::MatrixXi& edges, const Eigen::MatrixXd& UV, const FaceStretch& s,
+                    const SurfaceReference& reference) {
+  PassMetrics m = measure_stretch(s);
+  const Eigen::Index nf = F.rows();
+  const double total_3d = s.area_3d.sum(), total_uv = s.area_uv.cwiseAbs().sum();
 
   const Eigen::Index ne = edges.rows();
   Eigen::VectorXd lu(ne);

@@ -70,7 +70,11 @@ struct SurfaceReference {
 // V, F: the surface; edges: its undirected edges (#E x 2), each once.
 SurfaceReference surface_reference(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXi& edges);
 
-// The paper's metrics; stretch is infinite when a parameter triangle is flipped or degenerate.
+// The stretch metrics and the flipped and zero-area counts alone (the distortions left 0);
+// stretch is infinite when a parameter triangle is flipped or degenerate.
+PassMetrics measure_stretch(const FaceStretch& s);
+
+// The paper's metrics: measure_stretch's and the edge, angle and area distortions.
 // F, edges as for surface_reference; UV: #V x 2; s: face_stretch of the same map.
 PassMetrics measure(const Eigen::MatrixXi& F, const Eigen::MatrixXi& edges, const Eigen::MatrixXd& UV, const FaceStretch& s,
                     const SurfaceReference& reference);

@@ -80,6 +80,32 @@ TEST(Parameterize, StopRuleReturnsTheBestPassAndStopsWhenStretchRises) {
   }
 }
 
+// Without distortions a pass keeps its stretch and flip counts, and the same map comes out.
+TEST(Parameterize, PassesMeasuredWithoutDistortionsKeepTheirStretch) {
+  const testmesh::Mesh m = testmesh::tall_cap(16, 40);
+  Options o;
+  const Result full = parameterize(m.V, m.F, o);
+  o.measure_distortions = false;
+  const Result stretch_only = parameterize(m.V, m.F, o);
+  ASSERT_FALSE(full.error);
+  ASSERT_FALSE(stretch_only.error);
+  ASSERT_EQ(full.passes.size(), stretch_only.passes.size());
+  EXPECT_EQ(full.chosen_pass, stretch_only.chosen_pass);
+  EXPECT_EQ(full.uv, stretch_only.uv);
+  for (size_t i = 0; i < full.passes.size(); ++i) {
+    const PassMetrics &a = full.passes[i], &b = stretch_only.passes[i];
+    EXPECT_EQ(a.l2_stretch, b.l2_stretch);
+    EXPECT_EQ(a.linf_stretch, b.linf_stretch);
+    EXPECT_EQ(a.flipped, b.flipped);
+    EXPECT_EQ(a.degenerate, b.degenerate);
+    EXPECT_GT(a.angle_distortion, 0);  // a cap cannot be mapped flat without it
+    EXPECT_GT(a.edge_distortion, 0);
+    EXPECT_EQ(b.angle_distortion, 0);
+    EXPECT_EQ(b.edge_distortion, 0);
+    EXPECT_EQ(b.area_distortion, 0);
+  }
+}
+
 TEST(Parameterize, MaxPassesZeroGivesU0AndOneGivesU1) {
   const testmesh::Mesh m = testmesh::hemisphere(8, 16);
   Options o;

@@ -141,6 +141,7 @@ void solve_onto(SolvedChart& chart, Options options, double aspect, bool free_bo
   chart.deciding_map = false;
   chart.passes.clear();
   options.pass_uv = [&chart](int, const Eigen::MatrixXd& uv) { chart.passes.push_back(measure_real_faces(chart.mesh, uv)); };
+  options.measure_distortions = false;  // the passes are measured over the real faces above
   chart.map = parameterize(chart.mesh.V, chart.mesh.F, options);
   if (chart.map.error) return;
   // A refined map is none of the passes: measured on its own.
