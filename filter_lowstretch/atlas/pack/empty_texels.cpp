@@ -1,6 +1,9 @@
 #include "atlas/pack/empty_texels.h"
 
 #include <algorithm>
+#include <array>
+#include <cassert>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -17,7 +20,9 @@ namespace {
 class TexelGrid {
  public:
   explicit TexelGrid(int side)
-      : side_(side), taken_(size_t(side) * size_t(side), 0), run_(taken_.size(), 0), widest_(size_t(side), 0) {}
+      : side_(side), taken_(size_t(side) * size_t(side), 0), run_(taken_.size(), 0), widest_(size_t(side), 0) {
+    assert(side <= std::numeric_limits<Run>::max());
+  }
   int side() const { return side_; }
   void take(int x0, int y0, int x1, int y1) {  // cells [x0, x1) x [y0, y1), clipped
     x0 = std::max(x0, 0), y0 = std::max(y0, 0), x1 = std::min(x1, side_), y1 = std::min(y1, side_);
@@ -52,17 +57,26 @@ class TexelGrid {
   }
   // Free cells: how many free cells start there; taken ones: minus how many taken cells do, so
   // that a search skips a taken stretch at once.
-  void count_runs(int y0, int y1) {
+  void count_runs(int y0, int y1) { count_runs(y0, y1, 0, side_); }
+  // The same where only cells of columns [x0, x1) changed: a cell's count follows from its own
+  // and the next one's, so the counts right of x1 stay, and left of x0 they stay from the first
+  // that comes out as before.
+  void count_runs(int y0, int y1, int x0, int x1) {
+    x0 = std::max(x0, 0), x1 = std::min(x1, side_);
     for (int y = std::max(y0, 0); y < std::min(y1, side_); ++y) {
-      int free = 0, taken = 0, widest = 0;
-      for (int x = side_; x-- > 0;) {
-        const bool is_taken = taken_[index(x, y)] != 0;
+      const char* cells = taken_.data() + index(0, y);
+      Run* runs = run_.data() + index(0, y);
+      const int next = x1 < side_ ? runs[x1] : 0;
+      int free = std::max(next, 0), taken = std::max(-next, 0);
+      for (int x = x1; x-- > 0;) {
+        const bool is_taken = cells[x] != 0;
         free = is_taken ? 0 : free + 1;
         taken = is_taken ? taken + 1 : 0;
-        run_[index(x, y)] = is_taken ? -taken : free;
-        widest = std::max(widest, free);
+        const Run run = Run(is_taken ? -taken : free);
+        if (x < x0 && runs[x] == run) break;
+        runs[x] = run;
       }
-      widest_[size_t(y)] = widest;
+      widest_[size_t(y)] = std::max<int>(0, *std::max_element(runs, runs + side_));
     }
   }
   bool taken(int x, int y) const { return taken_[index(x, y)] != 0; }
@@ -106,9 +120,10 @@ class TexelGrid {
 
  private:
   size_t index(int x, int y) const { return size_t(y) * size_t(side_) + size_t(x); }
+  using Run = int16_t;  // a grid side is at most kTuning.most_grid_side: half the memory of int
   int side_;
   std::vector<char> taken_;
-  std::vector<int> run_;
+  std::vector<Run> run_;
   std::vector<int> widest_;  // per row: its longest stretch of free cells
 };
 
@@ -226,24 +241,53 @@ double take_tiled_charts(const std::vector<SolvedChart>& charts, const std::vect
 // the lowest top (then the leftmost).
 enum class Lowest { Bottom, Top };
 
-// The free place of a chart's outline of `size` cells over its turnings: the lowest (`lowest`),
-// then the leftmost.
-bool find_place(const TexelGrid& grid, const SolvedChart& chart, const Eigen::Vector2d& size, int side, Lowest lowest,
-                Outline& best, int& best_x, int& best_y) {
-  bool found = false;
+// The charts' outlines at one texel density, each turning drawn when first asked for: every
+// try of a density places the same charts, turned either way (Lowest).
+class Outlines {
+ public:
+  // density: grid cells^2 per unit of 3D area.
+  Outlines(const std::vector<SolvedChart>& charts, double density)
+      : charts_(charts), size_(charts.size(), Eigen::Vector2d::Zero()), drawn_(charts.size()), is_drawn_(charts.size()) {
+    for (size_t c = 0; c < charts.size(); ++c) {
+      const double own = charts[c].uv_area();
+      if (density > 0 && own > 0 && charts[c].box.sizes().minCoeff() > 0)
+        size_[c] = charts[c].box.sizes() * std::sqrt(density * charts[c].kept.area_3d / own);
+    }
+  }
+  // Chart c's box in cells; zero if it has no area or no map.
+  const Eigen::Vector2d& size(int c) const { return size_[size_t(c)]; }
+  const Outline& at(int c, int turns) {
+    if (!is_drawn_[size_t(c)][size_t(turns)]) {
+      drawn_[size_t(c)][size_t(turns)] = outline_of(charts_[size_t(c)], size(c), turns);
+      is_drawn_[size_t(c)][size_t(turns)] = true;
+    }
+    return drawn_[size_t(c)][size_t(turns)];
+  }
+
+ private:
+  const std::vector<SolvedChart>& charts_;
+  std::vector<Eigen::Vector2d> size_;
+  std::vector<std::array<Outline, 4>> drawn_;
+  std::vector<std::array<bool, 4>> is_drawn_;
+};
+
+// The free place of chart c's outline over its turnings: the lowest (`lowest`), then the leftmost.
+const Outline* find_place(const TexelGrid& grid, const SolvedChart& chart, int c, Outlines& outlines, int side, Lowest lowest,
+                          int& best_x, int& best_y) {
+  const Outline* best = nullptr;
   int best_key = 0;
   // A box looks the same half a turn round; an outline may fit into other room.
   const int turnings = chart.fill() >= kTuning.least_guest_fill ? 2 : 4;
   for (int turns = 0; turns < turnings; ++turns) {
-    Outline outline = outline_of(chart, size, turns);
+    const Outline& outline = outlines.at(c, turns);
     const int above = lowest == Lowest::Top ? int(outline.rows.size()) : 0;  // from the bottom to the key
-    const int last_y = found ? best_key - above : side;
+    const int last_y = best ? best_key - above : side;
     int x = 0, y = 0;
     if (last_y < 0 || !grid.first_fit(outline.rows, last_y, x, y)) continue;
-    if (!found || std::make_pair(y + above, x) < std::make_pair(best_key, best_x))
-      best_x = x, best_y = y, best_key = y + above, best = std::move(outline), found = true;
+    if (!best || std::make_pair(y + above, x) < std::make_pair(best_key, best_x))
+      best_x = x, best_y = y, best_key = y + above, best = &outline;
   }
-  return found;
+  return best;
 }
 
 // Takes the place's cells (grown by the gutter) and moves the chart's corners there.
@@ -253,7 +297,10 @@ void place_guest(const SolvedChart& chart, int g, const Outline& best, int x, in
   for (size_t r = 0; r < best.rows.size(); ++r)
     for (const auto& run : best.rows[r])
       grid.take(x + run.first - gutter, y + int(r) - gutter, x + run.second + gutter, y + int(r) + 1 + gutter);
-  grid.count_runs(y - gutter, y + int(best.rows.size()) + gutter);
+  int x0 = grid.side(), x1 = 0;
+  for (const auto& row : best.rows)
+    for (const auto& run : row) x0 = std::min(x0, run.first), x1 = std::max(x1, run.second);
+  grid.count_runs(y - gutter, y + int(best.rows.size()) + gutter, x + x0 - gutter, x + x1 + gutter);
   const Eigen::Vector2d origin(x, y);
   for (size_t j = 0; j < chart.faces.size(); ++j) {
     const int f = chart.faces[j];
@@ -291,29 +338,26 @@ std::vector<int> charts_to_put_in_empty_texels(const std::vector<SolvedChart>& c
 
 namespace {
 
-// Places the charts of `order` at `density` (grid cells^2 per unit of 3D area) where each first
-// fits; those that find no room are returned, or, if `stop_at_first`, only the first of them.
-std::vector<int> place_in_order(const std::vector<SolvedChart>& charts, const std::vector<int>& order, double density,
+// Places the charts of `order` at the outlines' density where each first fits; those that find
+// no room are returned, or, if `stop_at_first`, only the first of them.
+std::vector<int> place_in_order(const std::vector<SolvedChart>& charts, const std::vector<int>& order, Outlines& outlines,
                                 const GridFrame& frame, Lowest lowest, bool stop_at_first, TexelGrid& grid,
                                 Eigen::MatrixXd& corner_uv, std::vector<int>& face_chart) {
   std::vector<int> unplaced;
   for (const int g : order) {
     const SolvedChart& chart = charts[size_t(g)];
-    const double own = chart.uv_area();
-    Outline best;
+    const Eigen::Vector2d& size = outlines.size(g);
+    const Outline* best = nullptr;
     int x = 0, y = 0;
-    bool placed = density > 0 && own > 0 && chart.box.sizes().minCoeff() > 0;
-    if (placed) {
-      const Eigen::Vector2d size = chart.box.sizes() * std::sqrt(density * chart.kept.area_3d / own);  // in cells
-      // A sliver longer than the texture (or a degenerate map) has no room.
-      placed = size.maxCoeff() <= grid.side() && find_place(grid, chart, size, frame.side, lowest, best, x, y);
-    }
-    if (!placed) {
+    // A sliver longer than the texture (or a degenerate map) has no room.
+    if (size.minCoeff() > 0 && size.maxCoeff() <= grid.side())
+      best = find_place(grid, chart, g, outlines, frame.side, lowest, x, y);
+    if (!best) {
       unplaced.push_back(g);
       if (stop_at_first) break;
       continue;
     }
-    place_guest(chart, g, best, x, y, frame, grid, corner_uv, face_chart);
+    place_guest(chart, g, *best, x, y, frame, grid, corner_uv, face_chart);
   }
   return unplaced;
 }
@@ -332,8 +376,8 @@ std::vector<int> put_in_empty_texels(const std::vector<SolvedChart>& charts, con
   std::vector<char> is_guest(charts.size(), 0);
   for (const int i : guests) is_guest[size_t(i)] = 1;
   TexelGrid grid(frame.side);
-  const double density = take_tiled_charts(charts, is_guest, corner_uv, frame, grid);
-  return place_in_order(charts, larger_first(charts, guests), density, frame, Lowest::Bottom, false, grid, corner_uv, face_chart);
+  Outlines outlines(charts, take_tiled_charts(charts, is_guest, corner_uv, frame, grid));
+  return place_in_order(charts, larger_first(charts, guests), outlines, frame, Lowest::Bottom, false, grid, corner_uv, face_chart);
 }
 
 bool pack_by_outline(const std::vector<SolvedChart>& charts, const ChartOptions& options, Eigen::MatrixXd& corner_uv,
@@ -352,9 +396,10 @@ bool pack_by_outline(const std::vector<SolvedChart>& charts, const ChartOptions&
   std::vector<int> best_chart;
   // Either way of choosing a turning: each fills some layouts better than the other.
   const auto fits = [&](double density) {
+    Outlines outlines(charts, density);
     for (const Lowest lowest : {Lowest::Bottom, Lowest::Top}) {
       TexelGrid grid = empty;
-      if (!place_in_order(charts, order, density, frame, lowest, true, grid, corner_uv, face_chart).empty()) continue;
+      if (!place_in_order(charts, order, outlines, frame, lowest, true, grid, corner_uv, face_chart).empty()) continue;
       best_uv = corner_uv;
       best_chart = face_chart;
       return true;
