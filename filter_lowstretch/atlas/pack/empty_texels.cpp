@@ -4,6 +4,7 @@
 #include <array>
 #include <cassert>
 #include <cstdint>
+#include <cstring>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -79,7 +80,6 @@ class TexelGrid {
       widest_[size_t(y)] = std::max<int>(0, *std::max_element(runs, runs + side_));
     }
   }
-  bool taken(int x, int y) const { return taken_[index(x, y)] != 0; }
   // The first place (lowest row, then column; rows up to last_y) where an outline's cells are all
   // free; false if none. rows[r]: the outline's runs of cells [begin, end) in its row r.
   bool first_fit(const std::vector<std::vector<std::pair<int, int>>>& rows, int last_y, int& at_x, int& at_y) const {
@@ -127,11 +127,13 @@ class TexelGrid {
   std::vector<int> widest_;  // per row: its longest stretch of free cells
 };
 
-// Takes every cell that the triangle touches: row by row, the cells under the x-extent of the
-// triangle's part in that row (a convex piece, so every cell under its extent meets it).
-void take_triangle(TexelGrid& grid, const Eigen::Vector2d p[3]) {
+// The cells that the triangle touches, as take(y, x0, x1) for each row y in [0, rows) it meets:
+// the cells [x0, x1) under the x-extent of the triangle's part in that row (a convex piece, so
+// every cell under its extent meets it).
+template <class Take>
+void for_each_touched_row(const Eigen::Vector2d p[3], int rows, Take take) {
   const double low = std::min({p[0].y(), p[1].y(), p[2].y()}), high = std::max({p[0].y(), p[1].y(), p[2].y()});
-  for (int y = std::max(int(std::floor(low)), 0); y <= std::min(int(std::floor(high)), grid.side() - 1); ++y) {
+  for (int y = std::max(int(std::floor(low)), 0); y <= std::min(int(std::floor(high)), rows - 1); ++y) {
     const double y0 = std::max(double(y), low), y1 = std::min(double(y + 1), high);
     double x0 = std::numeric_limits<double>::infinity(), x1 = -x0;
     for (int k = 0; k < 3; ++k) {
@@ -144,8 +146,12 @@ void take_triangle(TexelGrid& grid, const Eigen::Vector2d p[3]) {
           x0 = std::min(x0, x), x1 = std::max(x1, x);
         }
     }
-    if (x0 <= x1) grid.take(int(std::floor(x0)), y, int(std::floor(x1)) + 1, y + 1);
+    if (x0 <= x1) take(y, int(std::floor(x0)), int(std::floor(x1)) + 1);
   }
+}
+
+void take_triangle(TexelGrid& grid, const Eigen::Vector2d p[3]) {
+  for_each_touched_row(p, grid.side(), [&grid](int y, int x0, int x1) { grid.take(x0, y, x1, y + 1); });
 }
 
 // A guest at one quarter turn and texel density: its corners in cells from its box's corner
@@ -167,16 +173,23 @@ Outline outline_of(const SolvedChart& chart, const Eigen::Vector2d& size, int tu
       outline.corners.push_back(q.cwiseProduct(cells));
     }
   const int w = int(std::floor(cells.x())) + 1, h = int(std::floor(cells.y())) + 1;
-  TexelGrid local(std::max(w, h));
-  for (size_t j = 0; j < chart.faces.size(); ++j) take_triangle(local, &outline.corners[3 * j]);
+  std::vector<char> taken(size_t(w) * size_t(h), 0);  // w x h, row after row
+  for (size_t j = 0; j < chart.faces.size(); ++j)
+    for_each_touched_row(&outline.corners[3 * j], h, [&](int y, int x0, int x1) {
+      x0 = std::max(x0, 0), x1 = std::min(x1, w);
+      if (x0 < x1) std::fill(taken.begin() + long(y) * w + x0, taken.begin() + long(y) * w + x1, 1);
+    });
   outline.rows.resize(size_t(h));
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      if (local.taken(x, y) && (x == 0 || !local.taken(x - 1, y))) {
-        int end = x + 1;
-        while (end < w && local.taken(end, y)) ++end;
-        outline.rows[size_t(y)].push_back({x, end});
-      }
+  for (int y = 0; y < h; ++y) {
+    const char* row = taken.data() + size_t(y) * size_t(w);
+    for (const char* at = row; (at = static_cast<const char*>(std::memchr(at, 1, size_t(row + w - at)))) != nullptr;) {
+      const char* end = static_cast<const char*>(std::memchr(at, 0, size_t(row + w - at)));
+      if (!end) end = row + w;
+      outline.rows[size_t(y)].push_back({int(at - row), int(end - row)});
+      if (end == row + w) break;
+      at = end;
+    }
+  }
   return outline;
 }
 
