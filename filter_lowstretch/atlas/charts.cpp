@@ -289,9 +289,12 @@ ChartsResult packed_by_outline(const AtlasSearch& s, const std::vector<SolvedCha
     return std::count_if(c.begin(), c.end(), [](const SolvedChart& chart) { return chart.free_boundary; });
   };
   const bool any_flat = free_charts(flat_seen) > free_charts(charts);
-  ChartsResult packed = atlas_of(charts, all, s.unit_V, s.F, s.unit, int(s.V.rows()), s.options);
+  // Each packing on a core of its own: a packing is one thread's work.
+  ChartsResult packed, flat;
+  for_each_index(any_flat ? 2 : 1, [&](int i, int) {
+    (i == 0 ? packed : flat) = atlas_of(i == 0 ? charts : flat_seen, all, s.unit_V, s.F, s.unit, int(s.V.rows()), s.options);
+  });
   if (any_flat) {
-    ChartsResult flat = atlas_of(std::move(flat_seen), all, s.unit_V, s.F, s.unit, int(s.V.rows()), s.options);
     if (!flat.error && (packed.error || texture_efficiency(flat) > texture_efficiency(packed))) {
       flat.notes.push_back("flat charts as seen along their normal");
       packed = std::move(flat);
