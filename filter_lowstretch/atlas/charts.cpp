@@ -2,12 +2,14 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <iterator>
 #include <map>
 #include <numeric>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include "atlas/base/tuning.h"
@@ -116,16 +118,23 @@ ChartsResult from_disk(const Eigen::MatrixXi& F, Result disk) {
   return result;
 }
 
-// What one chart per part could reach at best, from the parts' maps while deciding (U1; the
-// layout's further passes lower L2 by some percent): coverage 1 over their L2^2.
-double best_possible_efficiency(const std::vector<SolvedChart>& parts) {
+// The charts' L2^2 over their 3D area, as their maps measured it (0 without area).
+double mean_l2_squared(const std::vector<SolvedChart>& charts) {
   double weighted = 0, area = 0;
-  for (const SolvedChart& c : parts) {
-    if (c.kept.flipped + c.kept.degenerate > 0) return 0;
+  for (const SolvedChart& c : charts) {
     weighted += c.kept.area_3d * c.kept.l2_stretch * c.kept.l2_stretch;
     area += c.kept.area_3d;
   }
-  return weighted > 0 ? area / weighted : 0;
+  return area > 0 ? weighted / area : 0;
+}
+
+// What one chart per part could reach at best, from the parts' maps while deciding (U1; the
+// layout's further passes lower L2 by some percent): coverage 1 over their L2^2.
+
+double best_possible_efficiency(const std::vector<SolvedChart>& parts) {
+  const bool any_invalid = std::any_of(parts.begin(), parts.end(), [](const SolvedChart& c) { return c.kept.flipped + c.kept.degenerate > 0; });
+  const double mean = mean_l2_squared(parts);
+  return !any_invalid && mean > 0 ? 1 / mean : 0;
 }
 
 // Whether atlas a uses the texture better than b, or as well with fewer flipped and zero-area triangles.
@@ -258,31 +267,41 @@ void fill_empty_texels(const AtlasSearch& s, const std::vector<SolvedChart>& kep
       expected_empty_share(kept, cell_areas(kept)) < kTuning.least_empty_share)
     return;
   const double tiled_efficiency = texture_efficiency(tiled);
-  std::vector<SolvedChart> flat_seen;
-  for (const GuestChoice& choice : kGuestChoices) {
-    if (choice.flat_seen_along_normal && flat_seen.empty()) {
-      flat_seen = kept;
-      see_flat_charts_along_normal(flat_seen);
-    }
+  std::vector<SolvedChart> flat_seen = kept;
+  see_flat_charts_along_normal(flat_seen);
+  // Each choice laid out on its own (on both cores), then taken in order where it does better.
+  constexpr size_t choices = std::extent<decltype(kGuestChoices)>::value;
+  std::array<ChartsResult, choices> nested;
+  std::array<bool, choices> tried{};
+  for_each_index(int(choices), [&](int i, int) {
+    const GuestChoice& choice = kGuestChoices[i];
     const std::vector<SolvedChart>& charts = choice.flat_seen_along_normal ? flat_seen : kept;
     const std::vector<int> guests = charts_to_put_in_empty_texels(charts, cell_areas(charts), choice);
-    if (guests.empty()) continue;
-    ChartsResult nested = atlas_of(charts, guests, s.unit_V, s.F, s.unit, int(s.V.rows()), s.options);
-    if (nested.error || !(texture_efficiency(nested) > texture_efficiency(tiled))) continue;
-    nested.notes.push_back(std::string("with small charts in empty texels") +
-                           (choice.flat_seen_along_normal ? " and flat charts as seen along their normal" : "") +
-                           " the atlas has efficiency " + number_text(texture_efficiency(nested)) + " (coverage / L2^2) against " +
-                           number_text(tiled_efficiency));
-    tiled = std::move(nested);
+    if (guests.empty()) return;
+    nested[size_t(i)] = atlas_of(charts, guests, s.unit_V, s.F, s.unit, int(s.V.rows()), s.options);
+    tried[size_t(i)] = true;
+  });
+  for (size_t i = 0; i < choices; ++i) {
+    if (!tried[i] || nested[i].error || !(texture_efficiency(nested[i]) > texture_efficiency(tiled))) continue;
+    nested[i].notes.push_back(std::string("with small charts in empty texels") +
+                              (kGuestChoices[i].flat_seen_along_normal ? " and flat charts as seen along their normal" : "") +
+                              " the atlas has efficiency " + number_text(texture_efficiency(nested[i])) +
+                              " (coverage / L2^2) against " + number_text(tiled_efficiency));
+    tiled = std::move(nested[i]);
   }
+}
+
+// Every chart placed by its outline (atlas_of with all of them as guests).
+ChartsResult packed_whole(const AtlasSearch& s, std::vector<SolvedChart> charts) {
+  std::vector<int> all(charts.size());
+  std::iota(all.begin(), all.end(), 0);
+  return atlas_of(std::move(charts), std::move(all), s.unit_V, s.F, s.unit, int(s.V.rows()), s.options);
 }
 
 // The charts packed by their outlines instead of tiled (pack_by_outline), each on its own
 // rectangle or free; also with the flat ones as seen along their normal, if any is: the better
 // of the two, or an error.
 ChartsResult packed_by_outline(const AtlasSearch& s, const std::vector<SolvedChart>& charts) {
-  std::vector<int> all(charts.size());
-  std::iota(all.begin(), all.end(), 0);
   std::vector<SolvedChart> flat_seen = charts;
   see_flat_charts_along_normal(flat_seen);
   const auto free_charts = [](const std::vector<SolvedChart>& c) {
@@ -292,13 +311,12 @@ ChartsResult packed_by_outline(const AtlasSearch& s, const std::vector<SolvedCha
   // Each packing on a core of its own: a packing is one thread's work.
   ChartsResult packed, flat;
   for_each_index(any_flat ? 2 : 1, [&](int i, int) {
-    (i == 0 ? packed : flat) = atlas_of(i == 0 ? charts : flat_seen, all, s.unit_V, s.F, s.unit, int(s.V.rows()), s.options);
+    if (i == 0) packed = packed_whole(s, charts);
+    else flat = packed_whole(s, std::move(flat_seen));
   });
-  if (any_flat) {
-    if (!flat.error && (packed.error || texture_efficiency(flat) > texture_efficiency(packed))) {
-      flat.notes.push_back("flat charts as seen along their normal");
-      packed = std::move(flat);
-    }
+  if (any_flat && !flat.error && (packed.error || texture_efficiency(flat) > texture_efficiency(packed))) {
+    flat.notes.push_back("flat charts as seen along their normal");
+    packed = std::move(flat);
   }
   return packed;
 }
@@ -315,16 +333,6 @@ ChartsResult AtlasSearch::tile(std::vector<SolvedChart> charts) {
   return packed;
 }
 
-// The L2 stretch of charts over their 3D area, as their maps measured them.
-double l2_of_charts(const std::vector<SolvedChart>& charts) {
-  double weighted = 0, area = 0;
-  for (const SolvedChart& c : charts) {
-    weighted += c.kept.area_3d * c.kept.l2_stretch * c.kept.l2_stretch;
-    area += c.kept.area_3d;
-  }
-  return area > 0 ? std::sqrt(weighted / area) : 0;
-}
-
 // `laid_out` (a tiling of `kept`) replaced by the same charts packed by outline where that uses
 // the texture better: as they are, or each mapped free where that stretches it less. Free outlines
 // pack no denser than boxes, so the freed charts are packed only if they would win at the
@@ -335,10 +343,8 @@ void pack_by_outline_if_better(const AtlasSearch& s, const std::vector<SolvedCha
   std::vector<SolvedChart> freed = kept;
   const double to_beat = packed.error ? texture_efficiency(laid_out) : std::max(texture_efficiency(packed), texture_efficiency(laid_out));
   const double boxes_coverage = packed.error ? 1 : packed.coverage;
-  if (free_where_it_stretches_less(freed, s.options) > 0 && boxes_coverage / std::pow(l2_of_charts(freed), 2) > to_beat) {
-    std::vector<int> all(freed.size());
-    std::iota(all.begin(), all.end(), 0);
-    ChartsResult free = atlas_of(std::move(freed), all, s.unit_V, s.F, s.unit, int(s.V.rows()), s.options);
+  if (free_where_it_stretches_less(freed, s.options) > 0 && boxes_coverage / mean_l2_squared(freed) > to_beat) {
+    ChartsResult free = packed_whole(s, std::move(freed));
     if (!free.error && (packed.error || texture_efficiency(free) > texture_efficiency(packed))) {
       free.notes.push_back("charts mapped free where that stretches them less");
       packed = std::move(free);

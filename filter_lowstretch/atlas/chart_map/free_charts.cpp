@@ -28,6 +28,26 @@ void map_as_seen_along_normal(SolvedChart& chart) {
   chart.fit_box();
 }
 
+// Maps the chart free, with the natural boundary and as seen along its normal, and keeps the map
+// that scores highest above `to_beat`, if it has no flipped or zero-area triangle and its outline
+// does not cross itself. Whether one was kept.
+template <class Score>
+bool keep_best_free_map(SolvedChart& chart, const Options& solve, double to_beat, Score score) {
+  bool kept = false;
+  for (const bool seen_along_normal : {false, true}) {
+    SolvedChart free = unmapped_copy(chart);
+    if (seen_along_normal) map_as_seen_along_normal(free);
+    else solve_onto(free, solve, 0, true);
+    if (free.map.error || free.kept.flipped + free.kept.degenerate > 0) continue;
+    const double scored = score(free);
+    if (!(scored > to_beat) || crosses_itself(free)) continue;
+    to_beat = scored;
+    chart = std::move(free);
+    kept = true;
+  }
+  return kept;
+}
+
 }  // namespace
 
 SolvedChart unmapped_copy(const SolvedChart& chart) {
@@ -55,18 +75,7 @@ void free_the_charts_that_stretch(std::vector<SolvedChart>& charts, const ChartO
   for (const int i : above) above_faces += charts[size_t(i)].faces.size();
   for_each_index(int(above.size()), [&](int k, int) {
     SolvedChart& chart = charts[size_t(above[size_t(k)])];
-    double best = must_pay * uses(chart);
-    for (const bool seen_along_normal : {false, true}) {
-      SolvedChart free = unmapped_copy(chart);
-      if (seen_along_normal) map_as_seen_along_normal(free);
-      else solve_onto(free, for_share(options.disk, chart.faces.size(), above_faces), 0, true);
-      if (free.map.error || free.kept.flipped + free.kept.degenerate > 0) continue;
-      const double used = uses(free);
-      if (!(used > best)) continue;
-      if (crosses_itself(free)) continue;
-      best = used;
-      chart = std::move(free);
-    }
+    keep_best_free_map(chart, for_share(options.disk, chart.faces.size(), above_faces), must_pay * uses(chart), uses);
   });
 }
 
@@ -77,15 +86,8 @@ int free_where_it_stretches_less(std::vector<SolvedChart>& charts, const ChartOp
   for_each_index(int(charts.size()), [&](int k, int) {
     SolvedChart& chart = charts[size_t(k)];
     if (chart.free_boundary || !(chart.kept.l2_stretch > kTuning.free_above)) return;
-    for (const bool seen_along_normal : {false, true}) {
-      SolvedChart free = unmapped_copy(chart);
-      if (seen_along_normal) map_as_seen_along_normal(free);
-      else solve_onto(free, for_share(options.disk, chart.faces.size(), faces), 0, true);
-      if (free.map.error || free.kept.flipped + free.kept.degenerate > 0) continue;
-      if (!(free.kept.l2_stretch < chart.kept.l2_stretch) || crosses_itself(free)) continue;
-      chart = std::move(free);
-      freed[size_t(k)] = 1;
-    }
+    const auto less_stretch = [](const SolvedChart& c) { return -c.kept.l2_stretch; };
+    freed[size_t(k)] = keep_best_free_map(chart, for_share(options.disk, chart.faces.size(), faces), less_stretch(chart), less_stretch);
   });
   return int(std::count(freed.begin(), freed.end(), 1));
 }

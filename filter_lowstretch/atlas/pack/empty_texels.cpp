@@ -10,6 +10,7 @@
 #include <numeric>
 
 #include "atlas/base/tuning.h"
+#include "atlas/chart_map/chart_threads.h"
 #include "core/stretch.h"
 
 namespace lowstretch {
@@ -258,20 +259,30 @@ enum class Lowest { Bottom, Top };
 // try of a density places the same charts, turned either way (Lowest).
 class Outlines {
  public:
-  // density: grid cells^2 per unit of 3D area.
-  Outlines(const std::vector<SolvedChart>& charts, double density)
+  // density: grid cells^2 per unit of 3D area; side: the grid's cells a side.
+  Outlines(const std::vector<SolvedChart>& charts, double density, int side)
       : charts_(charts), size_(charts.size(), Eigen::Vector2d::Zero()), drawn_(charts.size()), is_drawn_(charts.size()) {
     for (size_t c = 0; c < charts.size(); ++c) {
       const double own = charts[c].uv_area();
       if (density > 0 && own > 0 && charts[c].box.sizes().minCoeff() > 0)
         size_[c] = charts[c].box.sizes() * std::sqrt(density * charts[c].kept.area_3d / own);
+      // A sliver longer than the texture (or a degenerate map) has no room.
+      if (!(size_[c].minCoeff() > 0 && size_[c].maxCoeff() <= side)) size_[c].setZero();
     }
   }
-  // Chart c's box in cells; zero if it has no area or no map.
-  const Eigen::Vector2d& size(int c) const { return size_[size_t(c)]; }
+  // Whether chart c could fit on the grid at all (its outline is drawn only then).
+  bool has_room(int c) const { return size_[size_t(c)].minCoeff() > 0; }
+  // A box looks the same half a turn round; an outline may fit into other room.
+  int turnings(int c) const { return charts_[size_t(c)].fill() >= kTuning.least_guest_fill ? 2 : 4; }
+  // Every turning of every chart with room, on both cores: then `at` only reads, from any thread.
+  void draw_all() {
+    for_each_index(int(charts_.size()), [this](int c, int) {
+      for (int turns = 0; has_room(c) && turns < turnings(c); ++turns) at(c, turns);
+    });
+  }
   const Outline& at(int c, int turns) {
     if (!is_drawn_[size_t(c)][size_t(turns)]) {
-      drawn_[size_t(c)][size_t(turns)] = outline_of(charts_[size_t(c)], size(c), turns);
+      drawn_[size_t(c)][size_t(turns)] = outline_of(charts_[size_t(c)], size_[size_t(c)], turns);
       is_drawn_[size_t(c)][size_t(turns)] = true;
     }
     return drawn_[size_t(c)][size_t(turns)];
@@ -285,13 +296,11 @@ class Outlines {
 };
 
 // The free place of chart c's outline over its turnings: the lowest (`lowest`), then the leftmost.
-const Outline* find_place(const TexelGrid& grid, const SolvedChart& chart, int c, Outlines& outlines, int side, Lowest lowest,
+const Outline* find_place(const TexelGrid& grid, int c, Outlines& outlines, int side, Lowest lowest,
                           int& best_x, int& best_y) {
   const Outline* best = nullptr;
   int best_key = 0;
-  // A box looks the same half a turn round; an outline may fit into other room.
-  const int turnings = chart.fill() >= kTuning.least_guest_fill ? 2 : 4;
-  for (int turns = 0; turns < turnings; ++turns) {
+  for (int turns = 0; turns < outlines.turnings(c); ++turns) {
     const Outline& outline = outlines.at(c, turns);
     const int above = lowest == Lowest::Top ? int(outline.rows.size()) : 0;  // from the bottom to the key
     const int last_y = best ? best_key - above : side;
@@ -359,12 +368,9 @@ std::vector<int> place_in_order(const std::vector<SolvedChart>& charts, const st
   std::vector<int> unplaced;
   for (const int g : order) {
     const SolvedChart& chart = charts[size_t(g)];
-    const Eigen::Vector2d& size = outlines.size(g);
     const Outline* best = nullptr;
     int x = 0, y = 0;
-    // A sliver longer than the texture (or a degenerate map) has no room.
-    if (size.minCoeff() > 0 && size.maxCoeff() <= grid.side())
-      best = find_place(grid, chart, g, outlines, frame.side, lowest, x, y);
+    if (outlines.has_room(g)) best = find_place(grid, g, outlines, frame.side, lowest, x, y);
     if (!best) {
       unplaced.push_back(g);
       if (stop_at_first) break;
@@ -389,7 +395,7 @@ std::vector<int> put_in_empty_texels(const std::vector<SolvedChart>& charts, con
   std::vector<char> is_guest(charts.size(), 0);
   for (const int i : guests) is_guest[size_t(i)] = 1;
   TexelGrid grid(frame.side);
-  Outlines outlines(charts, take_tiled_charts(charts, is_guest, corner_uv, frame, grid));
+  Outlines outlines(charts, take_tiled_charts(charts, is_guest, corner_uv, frame, grid), grid.side());
   return place_in_order(charts, larger_first(charts, guests), outlines, frame, Lowest::Bottom, false, grid, corner_uv, face_chart);
 }
 
@@ -407,16 +413,29 @@ bool pack_by_outline(const std::vector<SolvedChart>& charts, const ChartOptions&
   if (!(area_3d > 0) || !(inside > 0)) return false;
   Eigen::MatrixXd best_uv;
   std::vector<int> best_chart;
-  // Either way of choosing a turning: each fills some layouts better than the other.
+  // Either way of choosing a turning: each fills some layouts better than the other. Both are
+  // tried at once, each on a core; the lowest bottom is kept where both fit.
+  struct Try {
+    Eigen::MatrixXd corner_uv;
+    std::vector<int> face_chart;
+    bool fits = false;
+  };
   const auto fits = [&](double density) {
-    Outlines outlines(charts, density);
-    for (const Lowest lowest : {Lowest::Bottom, Lowest::Top}) {
+    Outlines outlines(charts, density, frame.side);
+    outlines.draw_all();
+    std::array<Try, 2> tries{{{corner_uv, face_chart}, {corner_uv, face_chart}}};
+    for_each_index(2, [&](int i, int) {
       TexelGrid grid = empty;
-      if (!place_in_order(charts, order, outlines, frame, lowest, true, grid, corner_uv, face_chart).empty()) continue;
-      best_uv = corner_uv;
-      best_chart = face_chart;
-      return true;
-    }
+      Try& t = tries[size_t(i)];
+      t.fits = place_in_order(charts, order, outlines, frame, i == 0 ? Lowest::Bottom : Lowest::Top, true, grid, t.corner_uv,
+                              t.face_chart).empty();
+    });
+    for (Try& t : tries)
+      if (t.fits) {
+        best_uv = std::move(t.corner_uv);
+        best_chart = std::move(t.face_chart);
+        return true;
+      }
     return false;
   };
   // The densest layout the grid holds, found by bisection: at `high` the charts would cover every
