@@ -130,7 +130,6 @@ double mean_l2_squared(const std::vector<SolvedChart>& charts) {
 
 // What one chart per part could reach at best, from the parts' maps while deciding (U1; the
 // layout's further passes lower L2 by some percent): coverage 1 over their L2^2.
-
 double best_possible_efficiency(const std::vector<SolvedChart>& parts) {
   const bool any_invalid = std::any_of(parts.begin(), parts.end(), [](const SolvedChart& c) { return c.kept.flipped + c.kept.degenerate > 0; });
   const double mean = mean_l2_squared(parts);
