@@ -255,14 +255,21 @@ double take_tiled_charts(const std::vector<SolvedChart>& charts, const std::vect
 // the lowest top (then the leftmost).
 enum class Lowest { Bottom, Top };
 
-// The charts' outlines at one texel density, each turning drawn when first asked for: every
-// try of a density places the same charts, turned either way (Lowest).
+// The charts' outlines at one texel density, each turning drawn when first asked for, or all
+// at once (draw_all): every try of a density places the same charts, turned either way (Lowest).
 class Outlines {
  public:
   // density: grid cells^2 per unit of 3D area; side: the grid's cells a side.
   Outlines(const std::vector<SolvedChart>& charts, double density, int side)
-      : charts_(charts), size_(charts.size(), Eigen::Vector2d::Zero()), drawn_(charts.size()), is_drawn_(charts.size()) {
+      : charts_(charts),
+        size_(charts.size(), Eigen::Vector2d::Zero()),
+        turnings_(charts.size(), 4),
+        drawn_(charts.size()),
+        is_drawn_(charts.size()) {
     for (size_t c = 0; c < charts.size(); ++c) {
+      // A box looks the same half a turn round; an outline may fit into other room. (Once here:
+      // fill() sums the chart's UV area, and every try asks for each chart's turnings.)
+      if (charts[c].fill() >= kTuning.least_guest_fill) turnings_[c] = 2;
       const double own = charts[c].uv_area();
       if (density > 0 && own > 0 && charts[c].box.sizes().minCoeff() > 0)
         size_[c] = charts[c].box.sizes() * std::sqrt(density * charts[c].kept.area_3d / own);
@@ -272,8 +279,7 @@ class Outlines {
   }
   // Whether chart c could fit on the grid at all (its outline is drawn only then).
   bool has_room(int c) const { return size_[size_t(c)].minCoeff() > 0; }
-  // A box looks the same half a turn round; an outline may fit into other room.
-  int turnings(int c) const { return charts_[size_t(c)].fill() >= kTuning.least_guest_fill ? 2 : 4; }
+  int turnings(int c) const { return turnings_[size_t(c)]; }
   // Every turning of every chart with room, on both cores: then `at` only reads, from any thread.
   void draw_all() {
     for_each_index(int(charts_.size()), [this](int c, int) {
@@ -291,6 +297,7 @@ class Outlines {
  private:
   const std::vector<SolvedChart>& charts_;
   std::vector<Eigen::Vector2d> size_;
+  std::vector<int> turnings_;
   std::vector<std::array<Outline, 4>> drawn_;
   std::vector<std::array<bool, 4>> is_drawn_;
 };
