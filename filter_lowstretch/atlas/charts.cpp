@@ -459,15 +459,15 @@ void merge_by_count(MergeSteps& steps) {
 bool merge_for_shorter_seams(AtlasSearch& s) {
   const double least = least_efficiency(s.options, texture_efficiency(s.result));
   // A least efficiency of the user's own is kept by the atlas as it is finally laid out, packed by
-  // outline where that beats the tiling: every step is packed so, and a tiled unmerged atlas below
-  // it may still merge (the anchor's tiles 0.704, packs 0.751).
+  // outline where that beats the tiling: every step is packed so, and an unmerged atlas whose
+  // tiling is below it may still merge.
   const bool users_least = s.options.min_efficiency > 0;
   if (s.result.error || s.cut.empty() || (!users_least && !(texture_efficiency(s.result) >= least))) return false;
   const ChartsResult unmerged = s.result;
   const std::vector<int> twin = opposite_half_edges(s.F);
   for (const bool free_unions : {false, true}) {
     // A least efficiency of the user's own is a trade-off chosen as fewer_seams is.
-    if (free_unions && ((!s.options.fewer_seams && !(s.options.min_efficiency > 0)) || s.F.rows() > kTuning.most_free_union_faces))
+    if (free_unions && ((!s.options.fewer_seams && !users_least) || s.F.rows() > kTuning.most_free_union_faces))
       continue;
     NeighbourMerging merging(s.cut, s.unit_V, s.F, twin, s.options, free_unions);
     MergeSteps steps{s, merging, least, free_unions || users_least, {}};

@@ -76,7 +76,8 @@ std::vector<OptionRow> make_table() {
       {"min_efficiency", "--min-efficiency", "", "", OptionKind::Real, {}, {}, "0 to 1", kToolOnly,
        "Charts: once cut, neighbouring charts are merged, those saving the most seam for the texture they cost "
        "first, while the atlas keeps this texture efficiency (coverage / L2^2) as finally laid out, each step packed "
-       "by its outlines; 1 merges none. Lower gives shorter seams and more stretch. 0: at least 0.61 and 90% of the unmerged atlas's (0.555 and 75% with Fewer seams).",
+       "by its outlines; 1 merges none. Lower gives shorter seams and more stretch. 0: at least 0.61 and 90% of the "
+       "unmerged atlas's (0.555 and 75% with Fewer seams).",
        [](const ChartOptions& o) { return o.min_efficiency; }, [](ChartOptions& o, double v) { o.min_efficiency = v; }},
       {"solver", "--solver", "", "", OptionKind::Choice, {"amg", "direct"}, {}, "", kToolOnly,
        "How each pass is solved: algebraic multigrid with BiCGStab (falling back to the sparse LU for a pass "
