@@ -460,9 +460,15 @@ bool merge_for_shorter_seams(AtlasSearch& s) {
   const double least = least_efficiency(s.options, texture_efficiency(s.result));
   // A least efficiency of the user's own is kept by the atlas as it is finally laid out, packed by
   // outline where that beats the tiling: every step is packed so, and an unmerged atlas whose
-  // tiling is below it may still merge.
+  // tiling is below it still merges if its outline packing keeps it.
   const bool users_least = s.options.min_efficiency > 0;
-  if (s.result.error || s.cut.empty() || (!users_least && !(texture_efficiency(s.result) >= least))) return false;
+  const auto unmerged_keeps_least = [&] {
+    if (texture_efficiency(s.result) >= least) return true;
+    if (!users_least) return false;
+    const ChartsResult packed = packed_by_outline(s, s.kept);
+    return !packed.error && texture_efficiency(packed) >= least;
+  };
+  if (s.result.error || s.cut.empty() || !unmerged_keeps_least()) return false;
   const ChartsResult unmerged = s.result;
   const std::vector<int> twin = opposite_half_edges(s.F);
   for (const bool free_unions : {false, true}) {
