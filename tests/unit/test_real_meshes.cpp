@@ -152,6 +152,19 @@ void cgal_atlas(const std::string& name, double min_efficiency, Eigen::MatrixXd&
   r = parameterize_charts(V, F, options);
 }
 
+// The CGAL mesh `name` cut into charts (nothing merged) and merged at `min_efficiency`: the merged
+// atlas valid, with fewer charts and shorter seams than the cut one.
+void expect_merged_for_shorter_seams(const std::string& name, double min_efficiency, Eigen::MatrixXi& F, ChartsResult& cut,
+                                     ChartsResult& merged) {
+  Eigen::MatrixXd V;
+  ASSERT_NO_FATAL_FAILURE(cgal_atlas(name, 1, V, F, cut));
+  ASSERT_NO_FATAL_FAILURE(cgal_atlas(name, min_efficiency, V, F, merged));
+  ASSERT_FALSE(cut.error || merged.error);
+  expect_valid_layout(F, merged);
+  EXPECT_LT(merged.charts.size(), cut.charts.size());
+  EXPECT_LT(merged.seam_length, cut.seam_length);
+}
+
 }  // namespace
 
 // A CAD part whose large faces meet their fillets at gentle edges (CGAL's couplingdown): cut along
@@ -192,15 +205,9 @@ TEST(RealMeshes, CgalCadPartIsAlsoCutAlongItsGentlerEdges) {
 // efficiency (or 0.61). Each step of merging is measured the same way, small charts in empty
 // texels included, and the charts freed as the cut atlas freed them.
 TEST(RealMeshes, CgalCadPartMergesChartsForShorterSeams) {
-  Eigen::MatrixXd V;
   Eigen::MatrixXi F;
   ChartsResult cut, merged;
-  ASSERT_NO_FATAL_FAILURE(cgal_atlas("couplingdown.off", 1, V, F, cut));
-  ASSERT_NO_FATAL_FAILURE(cgal_atlas("couplingdown.off", 0, V, F, merged));
-  ASSERT_FALSE(cut.error || merged.error);
-  expect_valid_layout(F, merged);
-  EXPECT_LT(merged.charts.size(), cut.charts.size());
-  EXPECT_LT(merged.seam_length, cut.seam_length);
+  ASSERT_NO_FATAL_FAILURE(expect_merged_for_shorter_seams("couplingdown.off", 0, F, cut, merged));
   EXPECT_GE(texture_efficiency(merged), std::max(0.61, 0.9 * texture_efficiency(cut)));
   // Its flat charts fill their outlines: packed by them, they use the texture better than tiled.
   EXPECT_TRUE(std::any_of(merged.notes.begin(), merged.notes.end(),
@@ -211,14 +218,8 @@ TEST(RealMeshes, CgalCadPartMergesChartsForShorterSeams) {
 // into charts tiles at 0.704 and packs by outline at 0.751: asked for 0.72, it merged nothing while
 // merging was judged by the tiling; judged by the outline packing, some steps keep 0.72.
 TEST(RealMeshes, CgalCadPartMergesDownToAGivenEfficiencyOfItsOutlinePacking) {
-  Eigen::MatrixXd V;
   Eigen::MatrixXi F;
   ChartsResult cut, merged;
-  ASSERT_NO_FATAL_FAILURE(cgal_atlas("anchor.off", 1, V, F, cut));
-  ASSERT_NO_FATAL_FAILURE(cgal_atlas("anchor.off", 0.72, V, F, merged));
-  ASSERT_FALSE(cut.error || merged.error);
-  expect_valid_layout(F, merged);
-  EXPECT_LT(merged.charts.size(), cut.charts.size());
-  EXPECT_LT(merged.seam_length, cut.seam_length);
+  ASSERT_NO_FATAL_FAILURE(expect_merged_for_shorter_seams("anchor.off", 0.72, F, cut, merged));
   EXPECT_GE(texture_efficiency(merged), 0.72);
 }
