@@ -290,8 +290,10 @@ void fill_empty_texels(const AtlasSearch& s, const std::vector<SolvedChart>& kep
   }
 }
 
-// Every chart placed by its outline (atlas_of with all of them as guests).
+// Every chart placed by its outline (atlas_of with all of them as guests), the free ones turned to
+// their smallest box.
 ChartsResult packed_whole(const AtlasSearch& s, std::vector<SolvedChart> charts) {
+  turn_free_charts_to_smallest_box(charts);
   std::vector<int> all(charts.size());
   std::iota(all.begin(), all.end(), 0);
   return atlas_of(std::move(charts), std::move(all), s.unit_V, s.F, s.unit, int(s.V.rows()), s.options);

@@ -13,6 +13,7 @@
 #include "chart_fixtures.h"
 #include "generated_meshes.h"
 #include "layout_checks.h"
+#include "core/stretch.h"
 
 using namespace lowstretch;
 
@@ -33,6 +34,28 @@ TEST(FreeCharts, FlatChartIsSeenAlongItsNormalAndCurvedOneKeepsItsRectangle) {
   EXPECT_NEAR(charts[0].fill(), 0.55, 0.01);  // the trapezoid's area over its box's: (1 + 0.1) / 2
   EXPECT_FALSE(charts[1].free_boundary);
   EXPECT_EQ(charts[1].kept.l2_stretch, cap_on_rectangle);
+}
+
+// A flat 4 x 1 strip mapped with the natural boundary is exact, but the boundary is pinned along
+// the strip's diagonal: so its box is 4.12 x 1.94 (fill 0.50). Turned, it fills its box and keeps
+// its stretch; a chart on its rectangle is left as it is.
+TEST(FreeCharts, FreeChartsAreTurnedToTheirSmallestBox) {
+  testmesh::Mesh strip = testmesh::grid(8);
+  strip.V.col(0) *= 4;
+  std::vector<SolvedChart> charts = {solved_chart_of(strip), solved_chart_of(testmesh::hemisphere(8, 16))};
+  solve_onto(charts[0], Options(), 0, true);
+  ASSERT_FALSE(charts[0].map.error);
+  ASSERT_FALSE(charts[1].map.error);
+  EXPECT_LT(charts[0].fill(), 0.6);
+  const double strip_stretch = charts[0].kept.l2_stretch;
+  const Eigen::MatrixXd cap_uv = charts[1].map.uv;
+  turn_free_charts_to_smallest_box(charts);
+  EXPECT_GT(charts[0].fill(), 0.98);
+  EXPECT_NEAR(std::max(charts[0].aspect(), 1 / charts[0].aspect()), 4.0, 0.1);
+  const FaceStretch turned = face_stretch(charts[0].mesh.V, charts[0].mesh.F, charts[0].map.uv);
+  EXPECT_EQ(turned.flipped, 0);
+  EXPECT_NEAR(l2_stretch(turned), strip_stretch, 1e-9);
+  EXPECT_EQ(charts[1].map.uv, cap_uv);
 }
 
 // A jagged sliver has no good rectangle: its corners and squeezed ears stretch it (L2 12.1 over

@@ -7,6 +7,7 @@
 #include "atlas/chart_map/boundary_crossing.h"
 #include "atlas/chart_map/chart_threads.h"
 #include "atlas/chart_map/plane_projection.h"
+#include "atlas/chart_map/smallest_box.h"
 
 namespace lowstretch {
 
@@ -103,6 +104,15 @@ void see_flat_charts_along_normal(std::vector<SolvedChart>& charts) {
       return;
     if (crosses_itself(seen)) return;
     chart = std::move(seen);
+  });
+}
+
+void turn_free_charts_to_smallest_box(std::vector<SolvedChart>& charts) {
+  for_each_index(int(charts.size()), [&](int k, int) {
+    SolvedChart& chart = charts[size_t(k)];
+    if (!chart.free_boundary || chart.map.error) return;
+    chart.map.uv = turned_to_smallest_box(chart.map.uv, chart.mesh.F.topRows(Eigen::Index(chart.faces.size())));
+    chart.fit_box();
   });
 }
 

@@ -33,4 +33,9 @@ int free_where_it_stretches_less(std::vector<SolvedChart>& charts, const ChartOp
 // box is no longer filled: worth it where other charts go into the texels it leaves empty.
 void see_flat_charts_along_normal(std::vector<SolvedChart>& charts);
 
+// Every free chart turned in its plane so that its box is smallest, which leaves its stretch as it
+// is: the natural boundary lies along its pins, and the outline packer turns charts only by quarter
+// turns. Not for tiling: a cell may fit the squarer box of a free map as it came better.
+void turn_free_charts_to_smallest_box(std::vector<SolvedChart>& charts);
+
 }  // namespace lowstretch
