@@ -290,10 +290,8 @@ void fill_empty_texels(const AtlasSearch& s, const std::vector<SolvedChart>& kep
   }
 }
 
-// Every chart placed by its outline (atlas_of with all of them as guests), the free ones turned to
-// their smallest box.
+// Every chart placed by its outline (atlas_of with all of them as guests).
 ChartsResult packed_whole(const AtlasSearch& s, std::vector<SolvedChart> charts) {
-  turn_free_charts_to_smallest_box(charts);
   std::vector<int> all(charts.size());
   std::iota(all.begin(), all.end(), 0);
   return atlas_of(std::move(charts), std::move(all), s.unit_V, s.F, s.unit, int(s.V.rows()), s.options);
@@ -334,17 +332,21 @@ ChartsResult AtlasSearch::tile(std::vector<SolvedChart> charts) {
   return packed;
 }
 
-// `laid_out` (a tiling of `kept`) replaced by the same charts packed by outline where that uses
+// `laid_out` (a layout of `kept`) replaced by the same charts packed by outline where that uses
 // the texture better: as they are, or each mapped free where that stretches it less. Free outlines
 // pack no denser than boxes, so the freed charts are packed only if they would win at the
-// coverage the boxes reached.
+// coverage the boxes reached. Free charts are turned to their smallest box here only: in the
+// steps before, the texture they would save lets merging go further, down to its least efficiency.
 void pack_by_outline_if_better(const AtlasSearch& s, const std::vector<SolvedChart>& kept, ChartsResult& laid_out) {
   if (kept.empty() || laid_out.error) return;
-  ChartsResult packed = packed_by_outline(s, kept);
-  std::vector<SolvedChart> freed = kept;
+  std::vector<SolvedChart> turned = kept;
+  turn_free_charts_to_smallest_box(turned);
+  ChartsResult packed = packed_by_outline(s, turned);
+  std::vector<SolvedChart> freed = std::move(turned);
   const double to_beat = packed.error ? texture_efficiency(laid_out) : std::max(texture_efficiency(packed), texture_efficiency(laid_out));
   const double boxes_coverage = packed.error ? 1 : packed.coverage;
   if (free_where_it_stretches_less(freed, s.options) > 0 && boxes_coverage / mean_l2_squared(freed) > to_beat) {
+    turn_free_charts_to_smallest_box(freed);
     ChartsResult free = packed_whole(s, std::move(freed));
     if (!free.error && (packed.error || texture_efficiency(free) > texture_efficiency(packed))) {
       free.notes.push_back("charts mapped free where that stretches them less");
@@ -543,7 +545,8 @@ ChartOptions with_refined_charts(ChartOptions options, Eigen::Index faces) {
 //    edges (parts that met the bound while deciding may stretch more in their cells);
 // 4. the best of them with small charts in the texels its tiling leaves empty;
 // 5. that atlas with charts merged for shorter seams, each step measured the same way;
-// 6. the charts of the best of them packed by their outlines instead of tiled.
+// 6. the charts of the best of them packed by their outlines instead of tiled (free ones turned to
+//    their smallest box).
 ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& given) {
   const ChartOptions options = with_refined_charts(given, F.rows());
   AtlasSearch s(V, F, options);
