@@ -346,7 +346,6 @@ void pack_by_outline_if_better(const AtlasSearch& s, const std::vector<SolvedCha
   const double to_beat = packed.error ? texture_efficiency(laid_out) : std::max(texture_efficiency(packed), texture_efficiency(laid_out));
   const double boxes_coverage = packed.error ? 1 : packed.coverage;
   if (free_where_it_stretches_less(freed, s.options) > 0 && boxes_coverage / mean_l2_squared(freed) > to_beat) {
-    turn_free_charts_to_smallest_box(freed);
     ChartsResult free = packed_whole(s, std::move(freed));
     if (!free.error && (packed.error || texture_efficiency(free) > texture_efficiency(packed))) {
       free.notes.push_back("charts mapped free where that stretches them less");

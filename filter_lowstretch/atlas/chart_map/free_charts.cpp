@@ -49,6 +49,13 @@ bool keep_best_free_map(SolvedChart& chart, const Options& solve, double to_beat
   return kept;
 }
 
+// A free chart turned in its plane so that its box is smallest.
+void turn_to_smallest_box(SolvedChart& chart) {
+  if (!chart.free_boundary || chart.map.error) return;
+  chart.map.uv = turned_to_smallest_box(chart.map.uv, chart.mesh.F.topRows(Eigen::Index(chart.faces.size())));
+  chart.fit_box();
+}
+
 }  // namespace
 
 SolvedChart unmapped_copy(const SolvedChart& chart) {
@@ -89,6 +96,7 @@ int free_where_it_stretches_less(std::vector<SolvedChart>& charts, const ChartOp
     if (chart.free_boundary || !(chart.kept.l2_stretch > kTuning.free_above)) return;
     const auto less_stretch = [](const SolvedChart& c) { return -c.kept.l2_stretch; };
     freed[size_t(k)] = keep_best_free_map(chart, for_share(options.disk, chart.faces.size(), faces), less_stretch(chart), less_stretch);
+    turn_to_smallest_box(chart);
   });
   return int(std::count(freed.begin(), freed.end(), 1));
 }
@@ -108,12 +116,7 @@ void see_flat_charts_along_normal(std::vector<SolvedChart>& charts) {
 }
 
 void turn_free_charts_to_smallest_box(std::vector<SolvedChart>& charts) {
-  for_each_index(int(charts.size()), [&](int k, int) {
-    SolvedChart& chart = charts[size_t(k)];
-    if (!chart.free_boundary || chart.map.error) return;
-    chart.map.uv = turned_to_smallest_box(chart.map.uv, chart.mesh.F.topRows(Eigen::Index(chart.faces.size())));
-    chart.fit_box();
-  });
+  for_each_index(int(charts.size()), [&](int k, int) { turn_to_smallest_box(charts[size_t(k)]); });
 }
 
 }  // namespace lowstretch

@@ -24,8 +24,9 @@ bool crosses_itself(const SolvedChart& free);
 void free_the_charts_that_stretch(std::vector<SolvedChart>& charts, const ChartOptions& options, double must_pay = kTuning.free_must_pay);
 
 // Every chart on a rectangle above kTuning.free_above whose free map (natural boundary, or seen
-// along its normal) stretches less is mapped so, if that does not fold over itself: packed by its
-// outline, a chart costs its own area rather than its box. How many were.
+// along its normal) stretches less is mapped so, if that does not fold over itself, and turned to
+// its smallest box (turn_free_charts_to_smallest_box): packed by its outline, a chart costs its own
+// area rather than its box. How many were.
 int free_where_it_stretches_less(std::vector<SolvedChart>& charts, const ChartOptions& options);
 
 // Every flat chart on a rectangle that its own shape, seen along its normal, stretches less (a
