@@ -388,6 +388,7 @@ struct MergeSteps {
     for_each_index(int(fresh.size()), [&](int i, int) {
       map_at_own_shape(fresh[size_t(i)], for_share(s.options.disk, fresh[size_t(i)].faces.size(), faces));
     }, largest_first(fresh, 0, fresh.size()));
+    refine_free_outlines(fresh, s.options);
     for (size_t k = 0; k < fresh.size(); ++k) {
       mapped.emplace(fresh[k].faces, fresh[k]);
       charts[at[k]] = std::move(fresh[k]);

@@ -126,6 +126,7 @@ void refine(const DiskMesh& disk, double seconds, const Options& method, Eigen::
   options.max_seconds = iterations > 0 ? std::numeric_limits<double>::infinity() : std::max(seconds, 0.05);
   if (iterations > 0) options.max_iterations = iterations;
   options.least_area_share = method.refine_least_area;
+  options.free_boundary = method.refine_moves_boundary && method.boundary == BoundaryShape::Natural;
   RefineReport report;
   const Eigen::MatrixXd refined = refine_stretch(disk, uv, options, report);
   if (!report.started) {

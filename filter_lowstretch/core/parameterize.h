@@ -35,6 +35,9 @@ struct Options {
   // gives the same map (the atlas's charts, whose maps decide where it cuts and merges).
   int refine_iterations = 0;
   double refine_least_area = 0;  // RefineOptions::least_area_share
+  // With the natural boundary, refining moves the boundary too (RefineOptions::free_boundary):
+  // less stretch, but the outline may then cross itself, which the caller must check.
+  bool refine_moves_boundary = false;
   // Called with a fraction in [0, 1] and the current stage; return false to cancel the run.
   std::function<bool(double fraction, const char* stage)> progress;
   // Called after every pass with that pass's UV (rows as in V, unused rows 0), for callers that

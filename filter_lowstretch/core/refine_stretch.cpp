@@ -55,8 +55,8 @@ Eigen::Matrix2d jacobian(const FlatTriangle& t, const Eigen::MatrixXd& uv, const
 }
 
 // Energy A |J|^2 / (2 det^2); infinite when det <= 0. Adds the gradient to `grad` if given.
-double energy(const DiskMesh& disk, const std::vector<FlatTriangle>& flat, const Eigen::MatrixXd& uv,
-              Eigen::MatrixXd* grad) {
+double stretch_energy(const DiskMesh& disk, const std::vector<FlatTriangle>& flat, const Eigen::MatrixXd& uv,
+                      Eigen::MatrixXd* grad) {
   double total = 0;
   if (grad) grad->setZero(uv.rows(), 2);
   for (Eigen::Index f = 0; f < disk.F.rows(); ++f) {
@@ -80,6 +80,37 @@ double energy(const DiskMesh& disk, const std::vector<FlatTriangle>& flat, const
     for (int k = 0; k < 3; ++k) grad->row(face(k)) += (dJ * t.g.row(k).transpose()).transpose();
   }
   return total;
+}
+
+// The UV area of the faces with 3D area; adds its gradient to `grad` if given.
+double uv_area_of(const DiskMesh& disk, const std::vector<FlatTriangle>& flat, const Eigen::MatrixXd& uv, Eigen::MatrixXd* grad) {
+  double total = 0;
+  if (grad) grad->setZero(uv.rows(), 2);
+  for (Eigen::Index f = 0; f < disk.F.rows(); ++f) {
+    if (!(flat[size_t(f)].area > 0)) continue;
+    const Eigen::RowVector3i face = disk.F.row(f);
+    total += signed_uv_area(uv.row(face(0)), uv.row(face(1)), uv.row(face(2)));
+    if (!grad) continue;
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::RowVector2d a = uv.row(face((k + 1) % 3)), b = uv.row(face((k + 2) % 3));
+      grad->row(face(k)) += 0.5 * Eigen::RowVector2d(a.y() - b.y(), b.x() - a.x());
+    }
+  }
+  return total;
+}
+
+// Boundary fixed: the stretch energy. Free: the stretch energy times the UV area over `area0`,
+// which no scaling changes (the stretch energy alone falls as the map grows).
+double energy(const DiskMesh& disk, const std::vector<FlatTriangle>& flat, const Eigen::MatrixXd& uv,
+              Eigen::MatrixXd* grad, double area0, double* scale = nullptr) {
+  if (area0 <= 0) return stretch_energy(disk, flat, uv, grad);
+  Eigen::MatrixXd grad_area;
+  const double a = stretch_energy(disk, flat, uv, grad);
+  if (!std::isfinite(a)) return a;
+  const double area = uv_area_of(disk, flat, uv, grad ? &grad_area : nullptr);
+  if (grad) *grad = (area * *grad + a * grad_area) / area0;
+  if (scale) *scale = area / area0;
+  return a * area / area0;
 }
 
 // The largest step t along d that keeps every UV triangle above its least area, capped at 1e9:
@@ -152,9 +183,11 @@ HessianLayout hessian_layout(const DiskMesh& disk, const std::vector<int>& unkno
 
 // Projected Newton (Teran et al. 2005; as in Smith et al. 2019): the energy's Hessian of each
 // triangle with respect to J, its negative eigenvalues clamped to zero, pulled back to the
-// triangle's six texture coordinates and added into layout.H's values.
+// triangle's six texture coordinates and added into layout.H's values. With a free boundary, the
+// stretch energy's Hessian times `scale` (the UV area over its first): the terms of the product
+// with the area are left out, which keeps H positive definite and each step a descent.
 void fill_projected_hessian(const DiskMesh& disk, const std::vector<FlatTriangle>& flat, const Eigen::MatrixXd& uv,
-                            HessianLayout& layout) {
+                            HessianLayout& layout, double scale) {
   double* values = layout.H.valuePtr();
   std::fill(values, values + layout.H.nonZeros(), 0.0);
   Eigen::Matrix4d C;  // vec(cofactor(J)) = C vec(J), vec row-major (J00, J01, J10, J11)
@@ -168,7 +201,7 @@ void fill_projected_hessian(const DiskMesh& disk, const std::vector<FlatTriangle
     const Eigen::Vector4d j(J(0, 0), J(0, 1), J(1, 0), J(1, 1)), c = C * j;
     Eigen::Matrix4d H = Eigen::Matrix4d::Identity() / (det * det) - 2 * (j * c.transpose() + c * j.transpose()) / (det * det * det) -
                         n * C / (det * det * det) + 3 * n * c * c.transpose() / (det * det * det * det);
-    H *= t.area;
+    H *= t.area * scale;
     Eigen::Matrix4d projected = H;
     if (Eigen::LLT<Eigen::Matrix4d>(H).info() != Eigen::Success) {  // not positive definite: clamp
       const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(H);
@@ -204,7 +237,8 @@ Eigen::MatrixXd refine_stretch(const DiskMesh& disk, const Eigen::MatrixXd& uv0,
   const double least = options.least_area_share * uv_area.sum();
   for (Eigen::Index f = 0; f < disk.F.rows(); ++f) flat[size_t(f)].least_uv_area = std::min(least, 0.5 * uv_area(f));
   Eigen::MatrixXd uv = uv0;
-  double e = energy(disk, flat, uv, nullptr);
+  const double area0 = options.free_boundary ? uv_area_of(disk, flat, uv, nullptr) : 0;
+  double e = energy(disk, flat, uv, nullptr, area0);
   report = RefineReport();
   report.energy_before = report.energy_after = e;
   if (!std::isfinite(e)) return uv;
@@ -213,7 +247,7 @@ Eigen::MatrixXd refine_stretch(const DiskMesh& disk, const Eigen::MatrixXd& uv0,
   std::vector<int> unknown(size_t(n), -1);
   int count = 0;
   for (int i = 0; i < n; ++i)
-    if (!disk.is_boundary[size_t(i)]) unknown[size_t(i)] = count++;
+    if (options.free_boundary || !disk.is_boundary[size_t(i)]) unknown[size_t(i)] = count++;
   if (count == 0) return uv;
   HessianLayout layout = hessian_layout(disk, unknown, count);
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> newton;  // SuiteSparse's CHOLMOD
@@ -229,10 +263,11 @@ Eigen::MatrixXd refine_stretch(const DiskMesh& disk, const Eigen::MatrixXd& uv0,
     const Clock::time_point iteration_start = Clock::now();
     // Stop before an iteration that would likely end past the budget.
     if (std::chrono::duration<double>(iteration_start - start).count() + 1.2 * last_iteration > options.max_seconds) break;
-    energy(disk, flat, uv, &grad);
+    double scale = 1;
+    energy(disk, flat, uv, &grad, area0, &scale);
     for (int i = 0; i < n; ++i)
       if (unknown[size_t(i)] >= 0) g.segment<2>(2 * unknown[size_t(i)]) = grad.row(i).transpose();
-    fill_projected_hessian(disk, flat, uv, layout);
+    fill_projected_hessian(disk, flat, uv, layout, scale);
     newton.factorize(layout.H);
     if (newton.info() != Eigen::Success) break;
     const Eigen::VectorXd step = -newton.solve(g);
@@ -243,7 +278,7 @@ Eigen::MatrixXd refine_stretch(const DiskMesh& disk, const Eigen::MatrixXd& uv0,
     double t = std::min(1.0, 0.9 * largest_safe_step(disk, flat, uv, d));
     double next = std::numeric_limits<double>::infinity();
     for (int tries = 0; tries < 40; ++tries, t /= 2) {
-      next = energy(disk, flat, uv + t * d, nullptr);
+      next = energy(disk, flat, uv + t * d, nullptr, area0);
       if (next <= e + 1e-4 * t * slope) break;
     }
     if (!(next < e)) break;

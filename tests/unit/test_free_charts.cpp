@@ -136,3 +136,35 @@ TEST(FreeCharts, AtlasPackedByOutlineWithChartsFreedIsValid) {
     return n.find("charts mapped free where that stretches them less") != std::string::npos;
   }));
 }
+
+// Where charts are refined (Fewer seams), a free chart is refined again with its boundary moving
+// too: the natural boundary of a square with a steep bump near a corner is conformal, which
+// shrinks the bump (L2 2.9), and a moving boundary gives it room. The chart keeps the new map only
+// as it uses its box better (fill / L2^2), with no flip and an outline that does not cross itself;
+// a chart on its rectangle, and every chart where nothing is refined, are left as they are.
+TEST(FreeCharts, RefinedFreeChartsMoveTheirBoundaryToo) {
+  ChartOptions refining;
+  refining.disk.refine = true;
+  refining.disk.refine_iterations = kTuning.refine_steps;
+  const testmesh::Mesh bumped = testmesh::grid(16, [](double x, double y) {
+    return std::exp(-((x - 0.8) * (x - 0.8) + (y - 0.8) * (y - 0.8)) / 0.01);
+  });
+  std::vector<SolvedChart> charts = {solved_chart_of(bumped), solved_chart_of(testmesh::hemisphere(8, 16))};
+  solve_onto(charts[0], refining.disk, 0, true);
+  for (const SolvedChart& c : charts) ASSERT_FALSE(c.map.error);
+  ASSERT_TRUE(charts[0].free_boundary);
+  ASSERT_EQ(charts[0].kept.flipped + charts[0].kept.degenerate, 0);
+  const std::vector<SolvedChart> before = charts;
+  refine_free_outlines(charts, ChartOptions());
+  for (size_t c = 0; c < charts.size(); ++c) EXPECT_EQ(charts[c].map.uv, before[c].map.uv) << "chart " << c;
+  refine_free_outlines(charts, refining);
+  const auto box_use = [](const SolvedChart& c) { return c.fill() / (c.kept.l2_stretch * c.kept.l2_stretch); };
+  EXPECT_TRUE(charts[0].free_boundary);
+  EXPECT_LT(charts[0].kept.l2_stretch, 0.6 * before[0].kept.l2_stretch) << before[0].kept.l2_stretch;
+  EXPECT_GT(box_use(charts[0]), box_use(before[0]));
+  EXPECT_EQ(charts[0].kept.flipped + charts[0].kept.degenerate, 0);
+  EXPECT_FALSE(crosses_itself(charts[0]));
+  const FaceStretch measured = face_stretch(charts[0].mesh.V, charts[0].mesh.F.topRows(Eigen::Index(charts[0].faces.size())), charts[0].map.uv);
+  EXPECT_NEAR(l2_stretch(measured), charts[0].kept.l2_stretch, 1e-9) << "the kept measure is the map's";
+  EXPECT_EQ(charts[1].map.uv, before[1].map.uv);
+}

@@ -137,3 +137,52 @@ TEST(RefineStretch, AFixedNumberOfStepsGivesTheSameMapEveryRun) {
   ASSERT_FALSE(a.notes.empty());
   EXPECT_NE(a.notes.back().find("in 2 iterations"), std::string::npos) << a.notes.back();
 }
+
+// A 3 x 1 strip bent into a half cylinder is developable: its one map without stretch is the flat
+// 3 x 1 rectangle. On the square its L2 stretch is far above 1, and with the boundary kept it
+// stays so; with the boundary free the refinement unrolls it (L2 1, sides 3 to 1). What it
+// lowers, the stretch energy times the UV area, no scaling changes: from the map ten times as
+// large it finds a map as good (of a size of its own: scaling changes nothing it measures).
+TEST(RefineStretch, AFreeBoundaryUnrollsABentStrip) {
+  const testmesh::Mesh flat_grid = testmesh::grid(12);
+  testmesh::Mesh strip = flat_grid;
+  const double radius = 3 / M_PI;
+  for (Eigen::Index i = 0; i < strip.V.rows(); ++i) {
+    const double angle = 3 * strip.V(i, 0) / radius;
+    strip.V.row(i) << radius * std::sin(angle), strip.V(i, 1), radius * std::cos(angle);
+  }
+  const Result on_square = parameterize(strip.V, strip.F, Options());
+  ASSERT_FALSE(on_square.error) << message(on_square.error);
+  DiskMesh disk;
+  ASSERT_FALSE(make_disk_mesh(strip.V, strip.F, disk));
+  Eigen::MatrixXd uv(disk.V.rows(), 2);
+  for (Eigen::Index i = 0; i < uv.rows(); ++i) uv.row(i) = on_square.uv.row(disk.input_vertex[size_t(i)]);
+  const double square_stretch = l2_stretch(face_stretch(disk.V, disk.F, uv));
+  ASSERT_GT(square_stretch, 1.2);
+
+  RefineOptions options;
+  options.relative_decrease = 1e-12;
+  options.max_iterations = 200;
+  RefineReport kept, moved, scaled;
+  const Eigen::MatrixXd boundary_kept = refine_stretch(disk, uv, options, kept);
+  EXPECT_GT(l2_stretch(face_stretch(disk.V, disk.F, boundary_kept)), 1.1);
+  options.free_boundary = true;
+  const Eigen::MatrixXd unrolled = refine_stretch(disk, uv, options, moved);
+  ASSERT_TRUE(moved.started);
+  const FaceStretch flat = face_stretch(disk.V, disk.F, unrolled);
+  EXPECT_EQ(flat.flipped + flat.degenerate, 0);
+  EXPECT_NEAR(l2_stretch(flat), 1.0, 1e-3);
+  // Its sides: the strip's long side over its short one, as in 3D (the map may turn).
+  const auto row_at = [&](double x, double y) {
+    Eigen::Index at = 0;
+    (flat_grid.V.leftCols(2).rowwise() - Eigen::RowVector2d(x, y)).rowwise().squaredNorm().minCoeff(&at);
+    for (Eigen::Index i = 0; i < disk.V.rows(); ++i)
+      if (disk.input_vertex[size_t(i)] == at) return i;
+    return Eigen::Index(-1);
+  };
+  const Eigen::RowVector2d corner = unrolled.row(row_at(0, 0));
+  const double long_side = (unrolled.row(row_at(1, 0)) - corner).norm(), short_side = (unrolled.row(row_at(0, 1)) - corner).norm();
+  EXPECT_NEAR(long_side / short_side, 3.0, 0.01);
+  const Eigen::MatrixXd from_larger = refine_stretch(disk, 10 * uv, options, scaled);
+  EXPECT_NEAR(l2_stretch(face_stretch(disk.V, disk.F, from_larger)), l2_stretch(flat), 1e-6);
+}

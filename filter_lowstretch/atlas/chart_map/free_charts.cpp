@@ -29,13 +29,14 @@ void map_as_seen_along_normal(SolvedChart& chart) {
   chart.fit_box();
 }
 
-// Maps the chart free, with the natural boundary and as seen along its normal, and keeps the map
-// that scores highest above `to_beat`, if it has no flipped or zero-area triangle and its outline
-// does not cross itself. Whether one was kept.
+// Maps the chart free, with the natural boundary and (unless natural_only) as seen along its
+// normal, and keeps the map that scores highest above `to_beat`, if it has no flipped or zero-area
+// triangle and its outline does not cross itself. Whether one was kept.
 template <class Score>
-bool keep_best_free_map(SolvedChart& chart, const Options& solve, double to_beat, Score score) {
+bool keep_best_free_map(SolvedChart& chart, const Options& solve, double to_beat, Score score, bool natural_only = false) {
   bool kept = false;
   for (const bool seen_along_normal : {false, true}) {
+    if (seen_along_normal && natural_only) break;
     SolvedChart free = unmapped_copy(chart);
     if (seen_along_normal) map_as_seen_along_normal(free);
     else solve_onto(free, solve, 0, true);
@@ -56,6 +57,11 @@ void turn_to_smallest_box(SolvedChart& chart) {
   chart.fit_box();
 }
 
+// What a chart's map makes of its box: fill / L2^2 (a rectangle with a closed hole fills less than 1).
+double box_use(const SolvedChart& c) {
+  return c.kept.flipped + c.kept.degenerate > 0 ? 0 : c.fill() / (c.kept.l2_stretch * c.kept.l2_stretch);
+}
+
 }  // namespace
 
 SolvedChart unmapped_copy(const SolvedChart& chart) {
@@ -72,18 +78,14 @@ bool crosses_itself(const SolvedChart& free) {
 
 void free_the_charts_that_stretch(std::vector<SolvedChart>& charts, const ChartOptions& options, double must_pay) {
   std::vector<int> above;
-  // What a chart's map makes of its box: fill / L2^2 (a rectangle with a closed hole fills less than 1).
-  const auto uses = [](const SolvedChart& c) {
-    return c.kept.flipped + c.kept.degenerate > 0 ? 0 : c.fill() / (c.kept.l2_stretch * c.kept.l2_stretch);
-  };
   // A free map covers at most its box at L2 at least 1: it can pay only below 1 / must_pay.
   for (size_t i = 0; i < charts.size(); ++i)
-    if (!(uses(charts[i]) * must_pay > 1)) above.push_back(int(i));
+    if (!(box_use(charts[i]) * must_pay > 1)) above.push_back(int(i));
   size_t above_faces = 0;
   for (const int i : above) above_faces += charts[size_t(i)].faces.size();
   for_each_index(int(above.size()), [&](int k, int) {
     SolvedChart& chart = charts[size_t(above[size_t(k)])];
-    keep_best_free_map(chart, for_share(options.disk, chart.faces.size(), above_faces), must_pay * uses(chart), uses);
+    keep_best_free_map(chart, for_share(options.disk, chart.faces.size(), above_faces), must_pay * box_use(chart), box_use);
   });
 }
 
@@ -95,10 +97,26 @@ int free_where_it_stretches_less(std::vector<SolvedChart>& charts, const ChartOp
     SolvedChart& chart = charts[size_t(k)];
     if (chart.free_boundary || !(chart.kept.l2_stretch > kTuning.free_above)) return;
     const auto less_stretch = [](const SolvedChart& c) { return -c.kept.l2_stretch; };
-    freed[size_t(k)] = keep_best_free_map(chart, for_share(options.disk, chart.faces.size(), faces), less_stretch(chart), less_stretch);
+    Options solve = for_share(options.disk, chart.faces.size(), faces);
+    solve.refine_moves_boundary = true;  // where refined: less stretch still (refine_free_outlines)
+    freed[size_t(k)] = keep_best_free_map(chart, solve, less_stretch(chart), less_stretch);
     turn_to_smallest_box(chart);
   });
   return int(std::count(freed.begin(), freed.end(), 1));
+}
+
+void refine_free_outlines(std::vector<SolvedChart>& charts, const ChartOptions& options) {
+  if (!options.disk.refine) return;
+  size_t faces = 0;
+  for (const SolvedChart& c : charts)
+    if (c.free_boundary) faces += c.faces.size();
+  for_each_index(int(charts.size()), [&](int k, int) {
+    SolvedChart& chart = charts[size_t(k)];
+    if (!chart.free_boundary || chart.map.error) return;
+    Options moving = for_share(options.disk, chart.faces.size(), faces);
+    moving.refine_moves_boundary = true;
+    keep_best_free_map(chart, moving, box_use(chart), box_use, true);
+  });
 }
 
 void see_flat_charts_along_normal(std::vector<SolvedChart>& charts) {

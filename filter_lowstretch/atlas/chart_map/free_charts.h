@@ -29,6 +29,12 @@ void free_the_charts_that_stretch(std::vector<SolvedChart>& charts, const ChartO
 // area rather than its box. How many were.
 int free_where_it_stretches_less(std::vector<SolvedChart>& charts, const ChartOptions& options);
 
+// With options.disk.refine: every free chart that uses its box better (fill / L2^2) with the
+// natural boundary refined with its boundary moving too (core/refine_stretch.h) is mapped so, if
+// that does not fold over itself. Where to free a chart is decided on maps refined with the
+// boundary kept: a moving boundary would free a lone chart that packs better on its rectangle.
+void refine_free_outlines(std::vector<SolvedChart>& charts, const ChartOptions& options);
+
 // Every flat chart on a rectangle that its own shape, seen along its normal, stretches less (a
 // rectangle stretches a round or bent face) is mapped so, if that does not fold over itself. Its
 // box is no longer filled: worth it where other charts go into the texels it leaves empty.
