@@ -66,8 +66,8 @@ std::vector<OptionRow> make_table() {
        [](const ChartOptions& o) { return o.gutter; }, [](ChartOptions& o, double v) { o.gutter = v; }},
       {"refine", "--refine", "refineStretch", "Refine stretch", OptionKind::Switch, {}, {}, "", kToolAndFilter,
        "After the paper's passes, lower the L2 stretch further by minimizing it directly (projected Newton, "
-       "boundary fixed, no triangle flips), for at most 10 times the time the passes took; an atlas's charts take 20 "
-       "steps each instead, so that every run gives the same atlas.",
+       "no triangle flips; the boundary stays, but for an atlas's free charts), for at most 10 times the time the "
+       "passes took; an atlas's charts take 20 steps each instead, so that every run gives the same atlas.",
        [](const ChartOptions& o) { return double(o.disk.refine); },
        [](ChartOptions& o, double v) { o.disk.refine = v != 0; }},
       {"max_charts", "--max-charts", "", "", OptionKind::Whole, {}, {}, "at least 1", kToolOnly,
