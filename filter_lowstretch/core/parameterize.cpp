@@ -29,6 +29,9 @@ Error check_options(const Options& o) {
   if (o.max_passes < 0 || o.max_passes > kMostPasses)
     return {ErrorCode::InvalidOption, 0, "must be from 0 to " + std::to_string(kMostPasses) + ", got " +
                                              std::to_string(o.max_passes), "max_passes"};
+  if (o.refine_iterations < 1 || o.refine_iterations > kMostRefineIterations)
+    return {ErrorCode::InvalidOption, 0, "must be from 1 to " + std::to_string(kMostRefineIterations) + ", got " +
+                                             std::to_string(o.refine_iterations), "refine_iterations"};
   const SolverOptions& s = o.solver;
   if (!(s.tolerance > 0 && s.tolerance < 1 && s.residual_accepted >= s.tolerance && s.max_iterations > 0 &&
         s.amg_minimum_rows >= 1))
@@ -117,14 +120,11 @@ void keep_pass(const DiskMesh& disk, Eigen::MatrixXd uv, const FaceStretch& stre
     result.face_stretch(f) = stretch.valid(f) ? stretch.normalization * stretch.sigma(f) : inf;
 }
 
-// Lowers the kept map's L2 stretch directly (refine_stretch.h) within `seconds`, or within
-// method.refine_iterations steps if that is above 0; notes the gain.
-void refine(const DiskMesh& disk, double seconds, const Options& method, Eigen::MatrixXd& uv, FaceStretch& stretch,
-            Result& result) {
+// Lowers the kept map's L2 stretch directly (refine_stretch.h) within method.refine_iterations
+// steps (counted, not timed: the map is the same every run); notes the gain.
+void refine(const DiskMesh& disk, const Options& method, Eigen::MatrixXd& uv, FaceStretch& stretch, Result& result) {
   RefineOptions options;
-  const int iterations = method.refine_iterations;
-  options.max_seconds = iterations > 0 ? std::numeric_limits<double>::infinity() : std::max(seconds, 0.05);
-  if (iterations > 0) options.max_iterations = iterations;
+  options.max_iterations = method.refine_iterations;
   options.least_area_share = method.refine_least_area;
   options.free_boundary = method.refine_moves_boundary && method.boundary == BoundaryShape::Natural;
   RefineReport report;
@@ -214,7 +214,7 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
 
   note_solver_fallbacks(result);
   if (options.refine)
-    refine(disk, seconds_since(start) * options.refine_time_factor, options, best_uv, best_stretch, result);
+    refine(disk, options, best_uv, best_stretch, result);
   keep_pass(disk, best_uv, best_stretch, V.rows(), result);
   result.seconds_total = seconds_since(start);
   report(1.0, "done");

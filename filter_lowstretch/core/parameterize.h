@@ -16,6 +16,7 @@ namespace lowstretch {
 struct DiskMesh;
 
 constexpr int kMostPasses = 1000;
+constexpr int kMostRefineIterations = 10000;
 
 struct Options {
   BoundaryShape boundary = BoundaryShape::Square;
@@ -28,12 +29,11 @@ struct Options {
   bool stop_when_stretch_rises = true;  // false forces all max_passes (benchmarks)
   SolverOptions solver;  // how each pass is solved (solver_options.h)
   // After the kept pass, minimize the L2 stretch directly (refine_stretch.h), for at most
-  // refine_time_factor times the time the method took; a note says what it gained.
+  // refine_iterations steps: a work budget, never a time one, so that every run gives the same map;
+  // a note says what it gained. The atlas's charts take kTuning.refine_steps each instead.
   bool refine = false;
-  double refine_time_factor = 8.5;  // with the final measures, under 10 times the passes
-  // Above 0: at most this many refining steps instead, however long they take, so that every run
-  // gives the same map (the atlas's charts, whose maps decide where it cuts and merges).
-  int refine_iterations = 0;
+  int refine_iterations = 25;  // 1 to kMostRefineIterations; about what 8.5 times the passes' time reached
+
   double refine_least_area = 0;  // RefineOptions::least_area_share
   // With the natural boundary, refining moves the boundary too (RefineOptions::free_boundary):
   // less stretch, but the outline may then cross itself, which the caller must check.

@@ -16,9 +16,10 @@
 namespace lowstretch {
 
 struct RefineOptions {
-  int max_iterations = 100000;  // the time budget usually ends it first
-  double max_seconds = 10;            // the caller scales it with the time the method took
-  double relative_decrease = 1e-5;    // stop when an iteration lowers the energy by less
+  // The work budget: at most this many steps, whatever they take, so that every run gives the
+  // same map (nothing here depends on time or threads).
+  int max_iterations = 25;  // Options::refine_iterations
+  double relative_decrease = 1e-5;  // stop when an iteration lowers the energy by less
   // No UV triangle ends below this share of the map's UV area, or half its own area if that is
   // less: a sliver's stretch weighs next to nothing, and the energy alone shrinks its UV triangle
   // toward its near-zero 3D area, past what a texture resolves (an atlas's charts set it).
@@ -33,7 +34,7 @@ struct RefineReport {
   int iterations = 0;
   // sum_T A3D sigma^2 (unit-box mesh); with free_boundary, times the UV area over the first's.
   double energy_before = 0, energy_after = 0;
-  double seconds = 0;
+  double seconds = 0;  // measured and reported only: no step depends on it
   bool started = false;  // false when uv has a flipped or zero-area triangle: nothing to refine
 };
 

@@ -66,10 +66,15 @@ std::vector<OptionRow> make_table() {
        [](const ChartOptions& o) { return o.gutter; }, [](ChartOptions& o, double v) { o.gutter = v; }},
       {"refine", "--refine", "refineStretch", "Refine stretch", OptionKind::Switch, {}, {}, "", kToolAndFilter,
        "After the paper's passes, lower the L2 stretch further by minimizing it directly (projected Newton, "
-       "no triangle flips; the boundary stays, but for an atlas's free charts), for at most 10 times the time the "
-       "passes took; an atlas's charts take 20 steps each instead, so that every run gives the same atlas.",
+       "no triangle flips; the boundary stays, but for an atlas's free charts), for at most 25 steps (the tool's "
+       "--refine-iterations); an atlas's charts take 20 steps each. Steps are counted, never timed: every run gives the same map.",
        [](const ChartOptions& o) { return double(o.disk.refine); },
        [](ChartOptions& o, double v) { o.disk.refine = v != 0; }},
+      {"refine_iterations", "--refine-iterations", "", "", OptionKind::Whole, {}, {}, "1 to 10000", kToolOnly,
+       "Refine stretch: at most this many projected Newton steps on a single chart (it stops earlier when a step "
+       "lowers the stretch energy by less than 1e-5 of it). More give less stretch and take longer.",
+       [](const ChartOptions& o) { return double(o.disk.refine_iterations); },
+       [](ChartOptions& o, double v) { o.disk.refine_iterations = int(v); }},
       {"max_charts", "--max-charts", "", "", OptionKind::Whole, {}, {}, "at least 1", kToolOnly,
        "Charts: at most this many; a chart the limit leaves uncut may stretch more than Max chart stretch.",
        [](const ChartOptions& o) { return double(o.max_charts); }, [](ChartOptions& o, double v) { o.max_charts = int(v); }},

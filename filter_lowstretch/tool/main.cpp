@@ -17,7 +17,7 @@
 #include "plugin_common/option_table.h"
 #include "plugin_common/result_lines.h"
 #include "plugin_common/result_table.h"
-#include "tool/one_blas_thread.h"
+#include "plugin_common/one_blas_thread.h"
 #include "vcg_arrays/mesh_arrays.h"
 #include "tool/mesh_counts.h"
 #include "tool/mesh_io.h"

@@ -5,10 +5,12 @@ measurement of xatlas and UVAtlas (listed below).
 
 usage: atlas_table.py --tool build/lowstretch --venv ~/.cache/filter_lowstretch/atlas-venv
                       [--tool-args "--atlas"] [--markdown] [--skip-uvatlas] [--xatlas-brute-force]
-                      [--gutter G] [--peer-runs N] MESH...
+                      [--gutter G] [--peer-runs N] [--repeat N] MESH...
 
 xatlas runs with its defaults; --xatlas-brute-force adds a row of xatlas with its brute-force
-packer (PackOptions.bruteForce), the slower and tighter one. --peer-runs N runs each peer N times
+packer (PackOptions.bruteForce), the slower and tighter one. --repeat N runs our tool N times per
+mesh and stops with exit status 1, naming the mesh and mode, if its OBJ files differ (issue 51:
+no output depends on time or threads). --peer-runs N runs each peer N times
 and gives each of its columns' median: UVAtlas's atlas changes from run to run. Each tool keeps
 its own gutter between charts (ours 2 texels of 1024, UVAtlas 1, xatlas none) unless --gutter G
 gives all three the same: ours --gutter G, xatlas PackOptions.padding G (whole texels of its about
@@ -132,14 +134,28 @@ def run_peer(name, mesh, V, tmp, gutter):
     return V, data["faces"], data["uv"], float(data["seconds"])
 
 
-def run_ours(tool, mesh, tool_args, tmp):
+class NotRepeatable(Exception):
+    """Two runs of our tool on one mesh and mode wrote different files (--repeat)."""
+
+
+def run_ours(tool, mesh, tool_args, tmp, repeat=1):
+    """Our tool's map of the mesh, timed by its first run; with repeat above 1 it runs that many
+    times and every run's OBJ must be the first's byte for byte (NotRepeatable otherwise)."""
     out = os.path.join(tmp, "ours.obj")
-    start = time.perf_counter()
-    proc = subprocess.run([tool, mesh, "-o", out, "--json", *tool_args], capture_output=True, text=True)
-    seconds = time.perf_counter() - start
-    if proc.returncode != 0:  # its first line says why (a usage text may follow); exit 3: mesh not usable
-        message = (proc.stderr.strip().splitlines() or [""])[0].split(": ", 2)[-1]
-        raise ToolFailed((status(proc) if proc.returncode != 3 else "") + message, failed=proc.returncode != 3)
+    first = None
+    for run in range(repeat):
+        start = time.perf_counter()
+        proc = subprocess.run([tool, mesh, "-o", out, "--json", *tool_args], capture_output=True, text=True)
+        seconds = time.perf_counter() - start if run == 0 else seconds
+        if proc.returncode != 0:  # its first line says why (a usage text may follow); exit 3: mesh not usable
+            message = (proc.stderr.strip().splitlines() or [""])[0].split(": ", 2)[-1]
+            raise ToolFailed((status(proc) if proc.returncode != 3 else "") + message, failed=proc.returncode != 3)
+        with open(out, "rb") as f:
+            data = f.read()
+        if first is not None and data != first:
+            raise NotRepeatable(f"{os.path.basename(mesh)} with {shlex.join(tool_args) or 'the defaults'}: run {run + 1} "
+                                "of our tool wrote another OBJ than run 1")
+        first = data
     vertices, faces, corner_uv = read_obj_with_texcoords(out)
     return np.array(vertices), np.array(faces).reshape(-1, 3), np.array(corner_uv, float).reshape(-1, 3, 2), seconds
 
@@ -291,7 +307,7 @@ def run_mesh(mesh, methods, args):
             try:
                 if method == "lowstretch":
                     tool_args = shlex.split(args.tool_args) + ([] if args.gutter is None else ["--gutter", str(args.gutter)])
-                    V, F, uv, seconds = run_ours(os.path.abspath(args.tool), mesh, tool_args, tmp)
+                    V, F, uv, seconds = run_ours(os.path.abspath(args.tool), mesh, tool_args, tmp, args.repeat)
                     results[method] = dict(atlas_metrics(V, F, uv), seconds=seconds, missing=len(F_in) - len(F))
                 else:
                     runs = []
@@ -324,14 +340,16 @@ def main():
     parser.add_argument("--peer-runs", type=int, default=1, metavar="N",
                         help="run each peer N times and give each column's median (UVAtlas varies from run to run)")
     parser.add_argument("--gutter", type=float, help="texels between charts for all three tools (default: each its own)")
+    parser.add_argument("--repeat", type=int, default=1, metavar="N",
+                        help="run our tool N times per mesh and fail, naming the mesh and mode, if its files differ")
     parser.add_argument("meshes", nargs="+", metavar="MESH")
     argv = sys.argv[1:]
     if "--tool-args" in argv[:-1]:  # so that a value starting with "--" is taken as the value
         k = argv.index("--tool-args")
         argv[k:k + 2] = ["--tool-args=" + argv[k + 1]]
     args = parser.parse_args(argv)
-    if args.peer_runs < 1:
-        parser.error("--peer-runs must be at least 1")
+    if args.peer_runs < 1 or args.repeat < 1:
+        parser.error("--peer-runs and --repeat must be at least 1")
     venv = os.path.expanduser(args.venv)
     if os.path.realpath(sys.prefix) != os.path.realpath(venv):  # numpy and the peers live in the venv
         python = ensure_venv(venv, not args.skip_uvatlas)
@@ -342,7 +360,11 @@ def main():
     if args.markdown:
         print("| " + " | ".join(COLUMNS) + " |\n|" + "---|" * len(COLUMNS), flush=True)
     for mesh in args.meshes:
-        rows, text, failures = run_mesh(mesh, methods, args)
+        try:
+            rows, text, failures = run_mesh(mesh, methods, args)
+        except NotRepeatable as difference:
+            print(f"not repeatable: {difference}", file=sys.stderr)
+            sys.exit(1)
         failed += failures
         summaries.append(text)
         if not args.markdown:

@@ -16,16 +16,25 @@ Seeded, so the same files every run. Needs numpy 2.4.6, pymeshlab 2025.7.post1 a
 0.26.0 (python3 -m venv ~/.cache/filter_lowstretch/scan-venv, then pip install those).
 MeshLab's VCG merge writes scratch files in the working folder, so it runs in a temporary one.
 
-usage: make_reconstructions.py MESH OUT_FOLDER [--big]
+  --small makes them smaller (tens of thousands of faces on a 20,000-face mesh: an eighth of the
+                 samples, Poisson depth 6, twice the VCG voxel, half the grid), for the sanitizer build.
+
+usage: make_reconstructions.py MESH OUT_FOLDER [--small] [--big]
 """
 import os
 import sys
 import tempfile
 import time
+from collections import namedtuple
 
 import numpy as np
 import pymeshlab
 from skimage.measure import label, marching_cubes
+
+# Points sampled for the first three, screened Poisson's depth, the VCG merge's voxel (percent of
+# the box diagonal) and the marching-cubes grid (cells along the longest side).
+Size = namedtuple("Size", "samples depth voxel_percent cells")
+FULL, SMALL = Size(60000, 8, 0.4, 128), Size(8000, 6, 0.8, 64)
 
 
 def write_off(path, V, F):
@@ -51,10 +60,10 @@ def current(ms):
     return m.vertex_matrix(), m.face_matrix()
 
 
-def reconstructions(mesh_path, samples):
+def reconstructions(mesh_path, size):
     ms = pymeshlab.MeshSet()
     ms.load_new_mesh(mesh_path)
-    ms.generate_sampling_poisson_disk(samplenum=samples)
+    ms.generate_sampling_poisson_disk(samplenum=size.samples)
     points, normals = ms.current_mesh().vertex_matrix(), ms.current_mesh().vertex_normal_matrix()
     sigma = 0.0005 * np.linalg.norm(points.max(0) - points.min(0))
     cloud = noisy_cloud(points, sigma, 1)
@@ -62,7 +71,7 @@ def reconstructions(mesh_path, samples):
     yield "ball_pivoting", current(cloud)
     cloud.set_current_mesh(0)
     # One thread: with two, the mesh differs from run to run.
-    cloud.generate_surface_reconstruction_screened_poisson(depth=8, threads=1)
+    cloud.generate_surface_reconstruction_screened_poisson(depth=size.depth, threads=1)
     yield "poisson", current(cloud)
     # Range maps: the points facing each of three directions, noise of their own, ball pivoted.
     merge = pymeshlab.MeshSet()
@@ -76,7 +85,7 @@ def reconstructions(mesh_path, samples):
     os.dup2(quiet, 1)  # the VCG merge prints its progress on stdout and stderr
     os.dup2(quiet, 2)
     try:
-        merge.generate_surface_reconstruction_vcg(voxsize=pymeshlab.PercentageValue(0.4))
+        merge.generate_surface_reconstruction_vcg(voxsize=pymeshlab.PercentageValue(size.voxel_percent))
     finally:
         os.dup2(saved[0], 1)
         os.dup2(saved[1], 2)
@@ -136,19 +145,20 @@ def sdf_mc(mesh_path, cells, noise, step, blobs, seed):
 
 
 def main():
-    args = [a for a in sys.argv[1:] if a != "--big"]
+    args = [a for a in sys.argv[1:] if a not in ("--big", "--small")]
+    size = SMALL if "--small" in sys.argv else FULL
     if len(args) != 2:
         sys.exit(__doc__)
     mesh_path, out = os.path.abspath(args[0]), os.path.abspath(args[1])
     os.makedirs(out, exist_ok=True)
-    todo = [("sdf_mc", lambda: sdf_mc(mesh_path, 128, 0.4, 1 / 256, 30, 3))]
+    todo = [("sdf_mc", lambda: sdf_mc(mesh_path, size.cells, 0.4, 1 / 256, 30, 3))]
     if "--big" in sys.argv:
         todo.append(("sdf_mc_big", lambda: sdf_mc(mesh_path, 400, 0.22, 1 / 256, 150, 4)))
     here = os.getcwd()
     with tempfile.TemporaryDirectory() as scratch:
         os.chdir(scratch)
         start = time.time()
-        for name, (V, F) in reconstructions(mesh_path, 60000):
+        for name, (V, F) in reconstructions(mesh_path, size):
             write_off(os.path.join(out, name + ".off"), V, F)
             print(f"{name}: {len(V)} vertices, {len(F)} faces, {time.time() - start:.1f} s")
             start = time.time()

@@ -1,8 +1,12 @@
 #!/usr/bin/env python3
 """U_opt, --refine and the optimum for the same boundary, side by side. The optimum is the lowest
-L2 stretch that a Newton minimizer (projected Hessians, CHOLMOD, a line search that never flips a
-triangle) reached with the same fixed boundary, seeded from U_opt; STRETCH_OPTIMUM.md is its
-Markdown table (mesh in the first column, boundary in the third, L2 stretch in the seventh).
+L2 stretch reached by minimizing the L2 stretch energy with the same fixed boundary, from U_opt,
+by Newton steps (CHOLMOD, per-triangle projected Hessians where the exact one is not positive
+definite) with a line search that never lets a triangle flip or collapse, run until it converged
+or hit a time limit, made outside the repository: --refine's minimization (which projects every
+triangle's Hessian) run to its own stop rule is `lowstretch MESH --boundary B --non-disk reject
+--refine --refine-iterations 10000`. OPTIMUM.md is its Markdown table (mesh in the first column,
+boundary in the third, L2 stretch in the seventh).
 For every mesh and boundary of that table, runs `lowstretch --non-disk reject --json` with and
 without --refine and prints a Markdown table (L2 and Linf stretch of the stored map, seconds of
 core time, the time ratio measured within the refined run (its whole time over the time of its
@@ -11,7 +15,7 @@ zero-area triangles), then the median and worst refined / optimum over the rows 
 the one the optimum was computed for (on BENT_SIDES the optimum's square sides bow by a quarter,
 the tool's bend by under 1%: those rows are listed, not counted).
 
-usage: refine_table.py LOWSTRETCH STRETCH_OPTIMUM.md MESH_FOLDER
+usage: refine_table.py LOWSTRETCH OPTIMUM.md MESH_FOLDER
 """
 import json
 import os

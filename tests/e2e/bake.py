@@ -207,7 +207,7 @@ def run_pymeshlab(args, method, coloured):
     """One method in its own pymeshlab process (its log is its own); returns (mesh, texture, log)."""
     sys.path.insert(0, os.path.join(HERE, "..", "meshlab2025"))
     from test_pymeshlab import venv_python
-    python = venv_python(args.venv, getattr(args, "venv_python", None) or sys.executable)
+    python = venv_python(args.venv)
     work = os.path.join(args.work, method.replace(" ", "_"))
     os.makedirs(work, exist_ok=True)
     proc = subprocess.run([python, os.path.abspath(__file__), "pymeshlab", "--inside", "--method", method,

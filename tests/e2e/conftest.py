@@ -20,7 +20,9 @@ def pytest_addoption(parser):
     pytest_options.add(parser, "--plugin", help="the MeshLab 2020.09 libfilter_lowstretch.so under test")
     pytest_options.add(parser, "--scan-python", help="test_scan_atlas.py TestReconstructions: a Python with numpy, "
                        "pymeshlab and scikit-image (~/.cache/filter_lowstretch/scan-venv/bin/python)")
+    pytest_options.add(parser, "--scan-size", default="full", choices=["full", "small"],
+                       help="test_scan_atlas.py: full (the armadillo) or small (the same defects and "
+                       "reconstructions of a smaller mesh, for the sanitizer build)")
     # test_bake.py's pymeshlab tests (the same options as tests/meshlab2025/conftest.py's)
     pytest_options.add(parser, "--pymeshlab-plugin", help="the pymeshlab (double) build of libfilter_lowstretch.so")
-    pytest_options.add(parser, "--venv", help="virtual environment folder for pymeshlab (created if missing)")
-    pytest_options.add(parser, "--venv-python", default=sys.executable, help="the Python that creates --venv")
+    pytest_options.add(parser, "--venv", help="virtual environment with pymeshlab 2025.7.post1 (.ci/setup-meshlab2025 makes it)")

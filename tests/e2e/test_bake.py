@@ -8,7 +8,7 @@ texture read upside down far off).
   python3 -B -m pytest -p no:cacheprovider tests/e2e/test_bake.py -k meshlab2020 \
       --prefix build/tests/e2e/prefix --resources resources [--cgal-meshes DIR]
   python3 -B -m pytest -p no:cacheprovider tests/e2e/test_bake.py -k pymeshlab \
-      --pymeshlab-plugin build/.../libfilter_lowstretch.so --venv DIR [--venv-python PYTHON]
+      --pymeshlab-plugin build/.../libfilter_lowstretch.so --venv DIR
 
 test_meshlab2020[CASE] (meshlabserver 2020.09, resources/lowstretch_bake.mlx) and
 test_pymeshlab[CASE] (pymeshlab 2025.7 in --venv): CASE is hemisphere (generated),
@@ -44,7 +44,7 @@ def bake_args(config, mode, case, work, **paths):
     if mesh:
         mesh = os.path.abspath(os.path.join(pytest_options.required(config, "cgal_meshes"), mesh))
     return argparse.Namespace(mode=mode, generate=generate, mesh=mesh, atlas=atlas, work=str(work), prefix=None,
-                              resources=None, plugin=None, venv=None, venv_python=None, **paths)
+                              resources=None, plugin=None, venv=None, **paths)
 
 
 def test_meshlab2020(request, tmp_path, case):
@@ -60,5 +60,4 @@ def test_pymeshlab(request, tmp_path, case):
     args = bake_args(config, "pymeshlab", case, tmp_path)
     args.plugin = os.path.abspath(pytest_options.required(config, "pymeshlab_plugin"))
     args.venv = os.path.abspath(pytest_options.required(config, "venv"))
-    args.venv_python = config.getoption("venv_python")
     bake.check_bake(*bake.bake(args))

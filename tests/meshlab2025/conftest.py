@@ -17,7 +17,6 @@ def pytest_addoption(parser):
     add(parser, "--ml2025-runner", help="lowstretch_meshlab2025_runner executable")
     add(parser, "--ml2025-plugin", help="the MeshLab 2025.07 (float) libfilter_lowstretch.so under test")
     add(parser, "--pymeshlab-plugin", help="the pymeshlab (double) build of libfilter_lowstretch.so")
-    add(parser, "--venv", help="virtual environment folder for pymeshlab (created if missing)")
-    add(parser, "--venv-python", default=sys.executable, help="the Python that creates --venv")
+    add(parser, "--venv", help="virtual environment with pymeshlab 2025.7.post1 (.ci/setup-meshlab2025 makes it)")
     add(parser, "--readme", help="README.md whose pymeshlab snippet is run (optional)")
     add(parser, "--build-dir", help="the build tree the snippet's build/ paths refer to (with --readme)")

@@ -87,7 +87,8 @@ TEST(OptionTable, DefaultsAreAccepted) {
 TEST(OptionTable, TheCoreNamesRejectedValuesByTheTable) {
   const std::vector<std::pair<std::string, double>> bad = {
       {"exponent", 0}, {"exponent", 1.5}, {"max_passes", -1}, {"max_passes", 1001}, {"max_stretch", 0.99},
-      {"texture_size", 7}, {"texture_size", 65537}, {"gutter", 0.4}, {"gutter", 129}, {"max_charts", 0}};
+      {"texture_size", 7}, {"texture_size", 65537}, {"gutter", 0.4}, {"gutter", 129}, {"max_charts", 0},
+      {"refine_iterations", 0}, {"refine_iterations", 10001}};
   for (const auto& b : bad) {
     const OptionRow* row = option_named(b.first);
     ASSERT_NE(row, nullptr) << b.first;
@@ -96,7 +97,8 @@ TEST(OptionTable, TheCoreNamesRejectedValuesByTheTable) {
     EXPECT_EQ(result.error.option, b.first);
   }
   const std::vector<std::pair<std::string, double>> edges = {
-      {"exponent", 1}, {"max_passes", 0}, {"max_stretch", 1}, {"texture_size", 16}, {"gutter", 0.5}};  // 16: the default gutter is an eighth
+      {"exponent", 1}, {"max_passes", 0}, {"max_stretch", 1}, {"texture_size", 16}, {"gutter", 0.5},
+      {"refine_iterations", 1}};  // 16: the default gutter is an eighth
   for (const auto& e : edges) {
     const ChartsResult result = run_with([&](ChartOptions& o) { option_named(e.first)->set(o, e.second); });
     EXPECT_FALSE(result.error) << e.first << " " << e.second << ": " << message(result.error);

@@ -42,8 +42,10 @@ TEST(RefineStretch, FlatSquareReturnsToItsOwnShape) {
   ASSERT_EQ(non_positive_triangles(disk, shaken), 0);
   RefineOptions options;
   options.relative_decrease = 1e-14;
+  options.max_iterations = 200;  // a small mesh: let it converge
   RefineReport report;
   const Eigen::MatrixXd refined = refine_stretch(disk, shaken, options, report);
+  EXPECT_LT(report.iterations, options.max_iterations) << "it converged: the relative decrease stopped it";
   ASSERT_TRUE(report.started);
   EXPECT_LT(report.energy_after, report.energy_before);
   EXPECT_LT((refined - exact).cwiseAbs().maxCoeff(), 1e-6);
@@ -59,7 +61,7 @@ TEST(RefineStretch, LowersTheStretchOfACurvedDiskWithoutFlipping) {
   ASSERT_FALSE(method.error) << message(method.error);
   Options refine = plain;
   refine.refine = true;
-  refine.refine_time_factor = 1000;  // a small mesh: let it converge
+  refine.refine_iterations = 200;  // a small mesh: let it converge
   const Result refined = parameterize(m.V, m.F, refine);
   ASSERT_FALSE(refined.error) << message(refined.error);
   const FaceStretch before = face_stretch(m.V, m.F, method.uv), after = face_stretch(m.V, m.F, refined.uv);
@@ -109,6 +111,7 @@ TEST(RefineStretch, ASliverKeepsAUvTriangleATextureResolves) {
   ASSERT_NEAR(area(uv, sliver), 4e-6, 1e-12);
   RefineOptions options;
   options.relative_decrease = 1e-14;
+  options.max_iterations = 200;
   options.least_area_share = 1e-6;
   RefineReport report;
   const Eigen::MatrixXd refined = refine_stretch(disk, uv, options, report);
@@ -126,8 +129,7 @@ TEST(RefineStretch, AFixedNumberOfStepsGivesTheSameMapEveryRun) {
   const testmesh::Mesh m = testmesh::tall_cap(10, 24);
   Options options;
   options.refine = true;
-  options.refine_iterations = 2;
-  options.refine_time_factor = 0;  // no time at all: the steps are counted, not timed
+  options.refine_iterations = 2;  // the budget is steps, never seconds
   const Result a = parameterize(m.V, m.F, options), b = parameterize(m.V, m.F, options);
   ASSERT_FALSE(a.error) << message(a.error);
   EXPECT_EQ(a.uv, b.uv);
@@ -136,6 +138,27 @@ TEST(RefineStretch, AFixedNumberOfStepsGivesTheSameMapEveryRun) {
   EXPECT_LT(l2_stretch(face_stretch(m.V, m.F, a.uv)), l2_stretch(face_stretch(m.V, m.F, plain.uv)));
   ASSERT_FALSE(a.notes.empty());
   EXPECT_NE(a.notes.back().find("in 2 iterations"), std::string::npos) << a.notes.back();
+  // More steps give less stretch still, and the same map every run too.
+  options.refine = true;
+  options.refine_iterations = 6;
+  const Result c = parameterize(m.V, m.F, options), d = parameterize(m.V, m.F, options);
+  ASSERT_FALSE(c.error) << message(c.error);
+  EXPECT_EQ(c.uv, d.uv);
+  EXPECT_LT(l2_stretch(face_stretch(m.V, m.F, c.uv)), l2_stretch(face_stretch(m.V, m.F, a.uv)));
+}
+
+TEST(RefineStretch, TheStepBudgetIsChecked) {
+  const testmesh::Mesh m = testmesh::tall_cap(10, 24);
+  for (const int steps : {0, kMostRefineIterations + 1}) {
+    Options options;
+    options.refine = true;
+    options.refine_iterations = steps;
+    const Result r = parameterize(m.V, m.F, options);
+    EXPECT_EQ(r.error.code, ErrorCode::InvalidOption) << steps;
+    EXPECT_EQ(r.error.option, "refine_iterations");
+  }
+  EXPECT_GT(Options().refine_iterations, 0);
+  EXPECT_EQ(RefineOptions().max_iterations, Options().refine_iterations) << "one default budget";
 }
 
 // A 3 x 1 strip bent into a half cylinder is developable: its one map without stretch is the flat

@@ -1,4 +1,4 @@
-#include "tool/one_blas_thread.h"
+#include "plugin_common/one_blas_thread.h"
 
 #include <dlfcn.h>
 
