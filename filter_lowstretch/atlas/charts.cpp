@@ -18,6 +18,7 @@
 #include "core/disk_mesh.h"
 #include "atlas/pack/empty_texels.h"
 #include "atlas/chart_map/chart_threads.h"
+#include "atlas/measure/valid_as_stored.h"
 #include "atlas/chart_map/free_charts.h"
 #include "atlas/pack/lay_out_charts.h"
 #include "atlas/cut/mesh_components.h"
@@ -743,7 +744,11 @@ bool charts_would_help(ErrorCode code) { return cutting_into_disks_fixes(code) |
 
 ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options) {
   if (Error e = check_chart_options(options)) return failed_result(e);
-  return disk_or_atlas(V, F, options, false);
+  ChartsResult result = disk_or_atlas(V, F, options, false);
+  if (result.error) return result;
+  double unit = 1;
+  const Eigen::MatrixXd unit_V = unit_box_of_used(V, F, unit);
+  return valid_as_stored(unit_V, F, unit, int(V.rows()), options, std::move(result));
 }
 
 double texture_efficiency(const ChartsResult& r) {

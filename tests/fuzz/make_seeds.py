@@ -184,6 +184,9 @@ def main():
     s["grid_collapsed_vertex"] = bytes([0, 0, 3, 6, 7, 8, 0])  # zero-area faces, a zero-length edge
     s["grid_tiny"] = bytes([0, 0, 2, 7, 0, 0, 0])
     s["grid_huge"] = bytes([0, 0, 2, 7, 255, 0, 0])
+    # The disk the fuzzer found folded (harmonic weights, exponent 0.3): a hemisphere of 2 rings and
+    # 5 sectors, its apex moved, a vertex moved onto another, all scaled by 10^-31.25.
+    s["hemisphere_harmonic_folded"] = bytes([8 | 16, 60, 27, 0, 0, 0, 27, 6, 8, 7, 0, 7, 3, 0, 0])
     tri = [0, 0, 0, 8, 0, 0, 0, 8, 0]
     s["raw_triangle"] = bytes([32, 0, 3, 1] + tri + [0, 1, 2])
     s["raw_zero_faces"] = bytes([32, 0, 3, 0] + tri)

@@ -118,13 +118,15 @@ def check_outputs(proc):
     stored = e2e.STORED_RE.search(proc.stdout)
     assert stored is not None, "the log has the metrics of the texture coordinates as stored"
     # The output values describe the stored (float) map: the log's "as stored" line; the kept
-    # pass, computed in double, is within the rounding of it.
+    # pass, computed in double, is within the rounding of it, unless the filter's last step had to
+    # map it again (the note of e2e.REPAIRED_RE).
+    repaired = e2e.REPAIRED_RE.search(proc.stdout) is not None
     same = (e2e.rel_diff(value["l2_stretch"], float(stored.group(1))) <= 1e-5
             and e2e.rel_diff(value["linf_stretch"], float(stored.group(2))) <= 1e-5
             and value["flipped"] == int(stored.group(3)) and value["degenerate"] == int(stored.group(4))
             and e2e.rel_diff(value["coverage"], float(stored.group(5))) <= 1e-4
             and value["subtexel_triangles"] == int(stored.group(6))
-            and e2e.rel_diff(value["l2_stretch"], chosen["l2"]) <= 1e-3)
+            and (repaired or e2e.rel_diff(value["l2_stretch"], chosen["l2"]) <= 1e-3))
     assert (same and value["kept_pass"] == chosen["pass"] and value["passes"] == len(passes)
             and e2e.rel_diff(value["initial_l2_stretch"], passes[0]["l2"]) <= 1e-5), (
         f"the output values are the logged metrics of the stored map (kept pass {int(value['kept_pass'])} of "

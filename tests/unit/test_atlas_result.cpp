@@ -79,10 +79,11 @@ TEST(AtlasResult, MetricsAreThoseOfTheCoordinatesAsStored) {
   EXPECT_NEAR(l2_stretch(face_stretch(corner_V, corner_F, corner_uv)), r.layout.l2_stretch, 1e-12);
 }
 
-TEST(AtlasResult, TrianglesThatFloatRoundingCollapsesAreCountedAndNoted) {
+TEST(AtlasResult, TrianglesThatFloatRoundingCollapsesAreMadeChartsOfTheirOwn) {
   // A unit square with two interior vertices 1e-9 apart at its centre: the two triangles between
   // them are tiny but positive in double; every map keeps the flat square, and in float (both
-  // vertices round to one point) they have zero area.
+  // vertices round to one point) they would have zero area. Even in disk-only mode the last step
+  // (valid_as_stored.h) makes each a chart of its own, and a note says so.
   Eigen::MatrixXd V(6, 3);
   V << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 0.5, 0, 0.5 + 1e-9, 0.5, 0;
   Eigen::MatrixXi F(6, 3);
@@ -91,16 +92,20 @@ TEST(AtlasResult, TrianglesThatFloatRoundingCollapsesAreCountedAndNoted) {
   disk_only.non_disk = NonDisk::Reject;
   const ChartsResult r = parameterize_charts(V, F, disk_only);
   ASSERT_FALSE(r.error) << message(r.error);
-  ASSERT_TRUE(r.input_is_disk);
-  const PassMetrics& kept = r.disk_passes[size_t(r.chosen_pass)];
+  const PassMetrics& kept = r.disk_passes.at(size_t(r.chosen_pass));
   EXPECT_EQ(kept.flipped + kept.degenerate, 0);  // in double
-  EXPECT_EQ(r.float_collapsed, 2);
-  EXPECT_EQ(r.layout.flipped + r.layout.degenerate, 2);  // as stored
-  EXPECT_GE(r.subtexel_triangles, 1);
-  // Apart by 1e-3, nothing collapses, and a note fewer.
+  EXPECT_TRUE(r.input_is_disk);  // its passes are the paper's passes over the whole disk
+  expect_valid_layout(F, r);
+  EXPECT_EQ(r.float_collapsed, 0);
+  EXPECT_EQ(r.charts.size(), 3u);
+  for (const int tiny : {1, 3})
+    for (int f = 0; f < 6; ++f)
+      if (f != tiny) EXPECT_NE(r.face_chart[size_t(f)], r.face_chart[size_t(tiny)]) << f << " " << tiny;
+  // Apart by 1e-3, nothing collapses: the disk stays one chart, and a note fewer.
   const testmesh::Mesh apart = square_with_close_pair(1e-3);
   const ChartsResult control = parameterize_charts(apart.V, apart.F, disk_only);
   ASSERT_FALSE(control.error) << message(control.error);
+  EXPECT_TRUE(control.input_is_disk);
   EXPECT_EQ(control.float_collapsed, 0);
   EXPECT_GT(r.notes.size(), control.notes.size());
   // By default that disk gets charts instead: the tiny triangles apart, each in a cell of its own

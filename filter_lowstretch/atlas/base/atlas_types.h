@@ -76,8 +76,9 @@ struct ChartsResult {
   double seam_length = 0;                 // sum over the charts
   double coverage = 0;                    // fraction of [0,1]^2 covered by the UV triangles
   double seconds_total = 0;
-  // A disk input is one chart: parameterize's map of the whole mesh, in the fields above. How
-  // its passes went (empty for charts, whose passes are per chart and summed up in `passes`):
+  // A disk input is one chart: parameterize's map of the whole mesh, in the fields above (the
+  // faces it folded or collapsed as stored cut out, if any: valid_as_stored.h). How its passes
+  // went (empty for charts, whose passes are per chart and summed up in `passes`):
   bool input_is_disk = false;
   std::vector<PassMetrics> disk_passes;   // every pass computed, including a rejected last one
   int chosen_pass = 0;                    // index into disk_passes of the kept pass (= layout)

@@ -1,0 +1,232 @@
+#include "atlas/measure/valid_as_stored.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "atlas/bound/cut_invalid_charts.h"
+#include "atlas/measure/atlas_result.h"
+#include "core/half_edges.h"
+#include "core/parameterize.h"
+#include "core/stretch.h"
+
+namespace lowstretch {
+
+namespace {
+
+// A face whose height is under this share of its longest side is a needle: alone, it is laid out
+// as a right triangle, whose UV area float keeps.
+constexpr double kNeedle = 0.05;
+constexpr int kRounds = 3;
+
+// Faces laid out together in one cell of the strip: their corners' UV (#faces x 6) in units of
+// their own.
+struct Piece {
+  std::vector<int> faces;
+  Eigen::MatrixXd corner_uv;
+};
+
+double corner_area(const Eigen::MatrixXd& corner_uv, Eigen::Index f) {
+  const auto c = [&](int k) { return Eigen::Vector2d(corner_uv.block(f, 2 * k, 1, 2).transpose()); };
+  return signed_uv_area(c(0), c(1), c(2));
+}
+
+// A face alone: its triangle laid flat, counter-clockwise; a needle (or a face without area) as a
+// right triangle.
+Piece single_face(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, int f) {
+  const Eigen::Vector3d a = unit_V.row(F(f, 0)), b = unit_V.row(F(f, 1)), c = unit_V.row(F(f, 2));
+  const double ab = (b - a).norm(), twice_area = (b - a).cross(c - a).norm();
+  const double longest = std::max({ab, (c - b).norm(), (a - c).norm()});
+  Piece piece{{f}, Eigen::MatrixXd(1, 6)};
+  if (ab > 0 && twice_area > kNeedle * longest * longest)
+    piece.corner_uv << 0, 0, ab, 0, (c - a).dot(b - a) / ab, twice_area / ab;
+  else
+    piece.corner_uv << 0, 0, 1, 0, 0, 1;
+  return piece;
+}
+
+// The chart's faces mapped again by the paper's method onto a square with Floater's weights
+// (positive weights, convex boundary: no triangle folds); false if they are not a disk.
+bool mapped_again(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const std::vector<int>& faces,
+                  const ChartOptions& options, Piece& piece) {
+  std::vector<int> local(size_t(unit_V.rows()), -1), global;
+  Eigen::MatrixXi chart_F(Eigen::Index(faces.size()), 3);
+  for (size_t j = 0; j < faces.size(); ++j)
+    for (int k = 0; k < 3; ++k) {
+      int& l = local[size_t(F(faces[j], k))];
+      if (l < 0) {
+        l = int(global.size());
+        global.push_back(F(faces[j], k));
+      }
+      chart_F(Eigen::Index(j), k) = l;
+    }
+  Eigen::MatrixXd chart_V(Eigen::Index(global.size()), 3);
+  for (size_t i = 0; i < global.size(); ++i) chart_V.row(Eigen::Index(i)) = unit_V.row(global[i]);
+  Options floater;  // the defaults: Floater's weights onto the square
+  floater.solver = options.disk.solver;
+  floater.measure_distortions = false;
+  const Result map = parameterize(chart_V, chart_F, floater);
+  if (map.error) return false;
+  piece.faces = faces;
+  piece.corner_uv.resize(chart_F.rows(), 6);
+  for (Eigen::Index f = 0; f < chart_F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) piece.corner_uv.block(f, 2 * k, 1, 2) = map.uv.row(chart_F(f, k));
+  return true;
+}
+
+// Square cells in rows along the top of [0,1]^2, as many as the pieces; the strip is as high as
+// the moved faces' share of the area (at least 8 gutters, at most half the texture, all of it if
+// no face stays).
+struct Strip {
+  double side = 0, height = 0, margin = 0;
+  int columns = 1;
+};
+
+Strip strip_for(size_t pieces, double area_share, bool none_stays, const ChartOptions& options) {
+  const double g = options.gutter / options.texture_size, n = double(pieces);
+  const double target = none_stays ? 1 : std::min(0.5, std::max(area_share, 8 * g));
+  const auto rows = [&](double side) { return std::ceil(n / std::floor(1 / side)); };
+  Strip strip;
+  strip.side = std::min(target, std::sqrt(target / n));
+  while (rows(strip.side) * strip.side > target) strip.side *= 0.95;
+  strip.columns = int(std::floor(1 / strip.side));
+  strip.height = rows(strip.side) * strip.side;
+  // Half a gutter on each side of a cell where cells are wide enough, else an eighth of the cell.
+  strip.margin = strip.side >= 4 * g ? g / 2 : strip.side / 8;
+  return strip;
+}
+
+// Piece p scaled uniformly into cell p of the strip (less its margin), into uv.
+void put_in_cell(const Piece& piece, size_t p, const Strip& strip, Eigen::MatrixXd& uv) {
+  Eigen::AlignedBox2d box;
+  for (Eigen::Index j = 0; j < piece.corner_uv.rows(); ++j)
+    for (int k = 0; k < 3; ++k) box.extend(Eigen::Vector2d(piece.corner_uv.block(j, 2 * k, 1, 2).transpose()));
+  const double scale = (strip.side - 2 * strip.margin) / box.sizes().maxCoeff();
+  const Eigen::Vector2d origin(double(p % size_t(strip.columns)) * strip.side + strip.margin,
+                               1 - strip.height + double(p / size_t(strip.columns)) * strip.side + strip.margin);
+  for (size_t j = 0; j < piece.faces.size(); ++j)
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector2d corner = piece.corner_uv.block(Eigen::Index(j), 2 * k, 1, 2).transpose();
+      uv.block(piece.faces[j], 2 * k, 1, 2) = (origin + scale * (corner - box.min())).transpose();
+    }
+}
+
+// 3D length of the edges between faces of different charts (unit box).
+double between_charts(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const std::vector<int>& face_chart) {
+  const std::vector<int> twin = opposite_half_edges(F);
+  double length = 0;
+  for (int h = 0; h < int(twin.size()); ++h) {
+    const int t = twin[size_t(h)];
+    if (t > h && face_chart[size_t(h / 3)] != face_chart[size_t(t / 3)])
+      length += (unit_V.row(half_edge_tail(F, h)) - unit_V.row(half_edge_head(F, h))).norm();
+  }
+  return length;
+}
+
+// How a round went: faces made charts of their own, charts mapped again.
+struct Moved {
+  int faces = 0, charts = 0;
+};
+
+// One round: the charts holding a flipped face mapped again (`map_again`; taken apart where they
+// are no disk), every other invalid face a chart of its own, laid out in the strip; stored and
+// measured again.
+ChartsResult with_invalid_faces_moved(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, double unit, int vertex_rows,
+                                      const ChartOptions& options, ChartsResult result, const std::vector<int>& invalid,
+                                      bool map_again, Moved& moved) {
+  const size_t chart_count = result.charts.size();
+  std::vector<std::vector<int>> faces_of(chart_count);
+  for (Eigen::Index f = 0; f < F.rows(); ++f) faces_of[size_t(result.face_chart[size_t(f)])].push_back(int(f));
+  std::vector<char> alone(size_t(F.rows()), 0), in_piece(size_t(F.rows()), 0), folded(chart_count, 0);
+  for (const int f : invalid) {
+    alone[size_t(f)] = 1;
+    if (corner_area(result.corner_uv, f) < 0) folded[size_t(result.face_chart[size_t(f)])] = 1;
+  }
+  std::vector<Piece> pieces;
+  for (size_t c = 0; c < chart_count && map_again; ++c) {
+    if (!folded[c]) continue;
+    Piece piece;
+    const bool disk = mapped_again(unit_V, F, faces_of[c], options, piece);
+    for (const int f : faces_of[c]) (disk ? in_piece : alone)[size_t(f)] = 1;
+    if (disk) {
+      for (const int f : faces_of[c]) alone[size_t(f)] = 0;
+      pieces.push_back(std::move(piece));
+      ++moved.charts;
+    }
+  }
+  const size_t mapped_pieces = pieces.size();
+  double moved_area = 0, area = 0;
+  for (Eigen::Index f = 0; f < F.rows(); ++f) {
+    if (alone[size_t(f)]) pieces.push_back(single_face(unit_V, F, int(f)));
+    moved.faces += alone[size_t(f)];
+    area += face_area_3d(unit_V, F, f);
+    if (alone[size_t(f)] || in_piece[size_t(f)]) moved_area += face_area_3d(unit_V, F, f);
+  }
+  const bool none_stays = std::count(alone.begin(), alone.end(), 1) + std::count(in_piece.begin(), in_piece.end(), 1) == F.rows();
+  const Strip strip = strip_for(pieces.size(), area > 0 ? moved_area / area : 0, none_stays, options);
+
+  // The layout that stays, back in [0,1]^2 (store() moves it inside the gutter again), below the strip.
+  const double g = options.gutter / options.texture_size;
+  Eigen::MatrixXd uv = ((result.corner_uv.array() - g) / (1 - 2 * g) * (1 - strip.height)).matrix();
+  for (size_t p = 0; p < pieces.size(); ++p) put_in_cell(pieces[p], p, strip, uv);
+
+  std::vector<Chart> charts;
+  std::vector<std::vector<int>> new_faces_of;
+  std::vector<int> face_chart(size_t(F.rows()));
+  for (size_t c = 0; c < chart_count; ++c) {
+    std::vector<int> staying;
+    for (const int f : faces_of[c])
+      if (!alone[size_t(f)] && !in_piece[size_t(f)]) staying.push_back(f);
+    if (staying.empty()) continue;
+    for (const int f : staying) face_chart[size_t(f)] = int(charts.size());
+    charts.push_back(result.charts[c]);
+    charts.back().faces = int(staying.size());
+    new_faces_of.push_back(std::move(staying));
+  }
+  for (size_t p = 0; p < pieces.size(); ++p) {
+    Chart chart;
+    chart.faces = int(pieces[p].faces.size());
+    chart.kept_whole = p < mapped_pieces ? "mapped again onto a square where its map folded"
+                                         : "a face on its own, where its chart's map was invalid";
+    for (const int f : pieces[p].faces) face_chart[size_t(f)] = int(charts.size());
+    charts.push_back(chart);
+    new_faces_of.push_back(pieces[p].faces);
+  }
+  result.seam_length += unit * (between_charts(unit_V, F, face_chart) - between_charts(unit_V, F, result.face_chart));
+  result.charts = std::move(charts);
+  result.face_chart = std::move(face_chart);
+  result.corner_uv = std::move(uv);
+  result.subtexel_triangles = result.float_collapsed = 0;
+  store(unit_V, F, vertex_rows, new_faces_of, options, result);
+  if (result.input_is_disk) {  // a disk's layout is its kept pass, as stored (as disk_result keeps it)
+    const PassMetrics measured = result.layout;
+    result.layout = result.disk_passes.at(size_t(result.chosen_pass));
+    copy_measures(measured, result.layout);
+  }
+  for (Chart& chart : result.charts) chart.above_bound = !(chart.l2_stretch <= options.max_stretch);
+  return result;
+}
+
+}  // namespace
+
+ChartsResult valid_as_stored(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, double unit, int vertex_rows,
+                             const ChartOptions& options, ChartsResult result) {
+  if (result.error) return result;
+  Moved moved;
+  for (int round = 0;; ++round) {
+    const std::vector<int> invalid = invalid_faces(unit_V, F, result.corner_uv);
+    if (invalid.empty()) break;
+    if (round == kRounds) return failed_result({ErrorCode::ChartsNotPacked, int(result.charts.size()), ""});
+    result = with_invalid_faces_moved(unit_V, F, unit, vertex_rows, options, std::move(result), invalid, round == 0, moved);
+  }
+  const auto count = [](int n, const char* one, const char* many) { return std::to_string(n) + (n == 1 ? one : many); };
+  if (moved.faces + moved.charts > 0)
+    result.notes.push_back("flipped or zero-area UV triangles as stored: " +
+                           count(moved.charts, " chart", " charts") + " mapped again onto a square, " +
+                           count(moved.faces, " face", " faces") + " made charts of their own, laid out anew");
+  return result;
+}
+
+}  // namespace lowstretch

@@ -1,0 +1,149 @@
+// The last step's guarantee (atlas/measure/valid_as_stored.h): whatever layout reaches it, every
+// face with 3D area leaves with a UV triangle of positive area as stored, and nothing overlaps.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <set>
+#include <vector>
+
+#include "atlas/bound/cut_invalid_charts.h"
+#include "atlas/charts.h"
+#include "atlas/measure/valid_as_stored.h"
+#include "generated_meshes.h"
+#include "layout_checks.h"
+
+using namespace lowstretch;
+
+namespace {
+
+// The disk fuzz_parameterize found folded at its 337th run: 11 vertices near 1e-32 (two on one
+// point), 15 faces.
+testmesh::Mesh fuzzed_disk() {
+  testmesh::Mesh m;
+  m.V.resize(11, 3);
+  m.V << 1.8979019725174283e-31, 0, 5.6234132519034912e-32,  //
+      3.9763536438352534e-32, 0, 3.9763536438352539e-32,     //
+      1.2287608515898403e-32, 3.7817370440634958e-32, 3.9763536438352539e-32,
+      -3.216937673507466e-32, 2.3372420297457995e-32, 3.9763536438352539e-32,
+      -3.2169376735074677e-32, -2.3372420297457986e-32, 3.9763536438352539e-32,
+      0, -3.7817370440634958e-32, 3.9763536438352539e-32,  //
+      5.6234132519034912e-32, 0, 3.4433475196132094e-48,   //
+      -4.5494368871832113e-32, 3.3053593770149312e-32, 3.4433475196132094e-48,
+      -4.5494368871832113e-32, 3.3053593770149312e-32, 3.4433475196132094e-48,
+      -4.5494368871832124e-32, -3.3053593770149296e-32, 3.4433475196132094e-48,
+      1.7377302612314649e-32, -5.3481838170433359e-32, 3.4433475196132094e-48;
+  m.F.resize(15, 3);
+  m.F << 0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 5, 0, 5, 1, 1, 6, 7, 1, 7, 2, 2, 7, 8, 2, 8, 3, 3, 8, 9, 3, 9, 4, 4, 9, 10, 4,
+      10, 5, 5, 10, 6, 5, 6, 1;
+  return m;
+}
+
+// The mesh moved into [0,1]^3 by one scale, as the atlas measures it.
+Eigen::MatrixXd in_unit_box(const Eigen::MatrixXd& V) {
+  const Eigen::RowVector3d low = V.colwise().minCoeff();
+  return (V.rowwise() - low) / (V.colwise().maxCoeff() - low).maxCoeff();
+}
+
+std::map<int, std::vector<int>> faces_by_chart(const ChartsResult& r) {
+  std::map<int, std::vector<int>> faces;
+  for (size_t f = 0; f < r.face_chart.size(); ++f) faces[r.face_chart[f]].push_back(int(f));
+  return faces;
+}
+
+}  // namespace
+
+TEST(ValidAsStored, TheFuzzedDiskFoldedByHarmonicWeightsComesBackValid) {
+  const testmesh::Mesh m = fuzzed_disk();
+  ChartOptions options;
+  options.disk.weights = InitialWeights::Harmonic;
+  options.disk.exponent = 0.3;
+  options.disk.max_passes = 2;
+  options.texture_size = 256;
+  const Result paper = parameterize(m.V, m.F, options.disk);
+  ASSERT_FALSE(paper.error);
+  EXPECT_GT(paper.passes.at(size_t(paper.chosen_pass)).flipped, 0) << "negative weights fold the paper's map";
+  for (const NonDisk mode : {NonDisk::Charts, NonDisk::Atlas}) {
+    options.non_disk = mode;
+    const ChartsResult r = parameterize_charts(m.V, m.F, options);
+    ASSERT_FALSE(r.error) << r.error.detail;
+    EXPECT_EQ(r.layout.flipped, 0);
+    EXPECT_TRUE(invalid_faces(in_unit_box(m.V), m.F, r.corner_uv).empty());
+    expect_valid_layout(m.F, r, &m.V);
+  }
+}
+
+TEST(ValidAsStored, EveryWeightBoundaryAndModeGivesAValidAtlas) {
+  const std::vector<testmesh::Mesh> meshes = {fuzzed_disk(), testmesh::hemisphere(6, 12), testmesh::torus(8, 16),
+                                              testmesh::tall_cap(8, 16)};
+  for (const testmesh::Mesh& m : meshes)
+    for (const InitialWeights weights : {InitialWeights::Floater, InitialWeights::MeanValue, InitialWeights::Harmonic})
+      for (const BoundaryShape boundary : {BoundaryShape::Square, BoundaryShape::Circle, BoundaryShape::Natural})
+        for (const NonDisk mode : {NonDisk::Charts, NonDisk::Atlas}) {
+          ChartOptions options;
+          options.disk.weights = weights;
+          options.disk.boundary = boundary;
+          options.disk.exponent = 0.3;
+          options.non_disk = mode;
+          const ChartsResult r = parameterize_charts(m.V, m.F, options);
+          ASSERT_FALSE(r.error) << r.error.detail;
+          SCOPED_TRACE(testing::Message() << m.F.rows() << " faces, weights " << int(weights) << ", boundary "
+                                          << int(boundary) << ", mode " << int(mode));
+          EXPECT_TRUE(invalid_faces(in_unit_box(m.V), m.F, r.corner_uv).empty());
+          expect_valid_layout(m.F, r, &m.V);
+        }
+}
+
+// A valid atlas spoiled by hand: one chart mirrored (every triangle flipped) and one face of
+// another collapsed onto a point. The mirrored chart comes back as one chart mapped again, the
+// collapsed face as a chart of its own, every other chart with the faces it had.
+TEST(ValidAsStored, AFoldedChartIsMappedAgainAndACollapsedFaceGoesAlone) {
+  const testmesh::Mesh m = testmesh::sphere(12, 24);
+  const ChartOptions options;
+  ChartsResult r = parameterize_charts(m.V, m.F, options);
+  ASSERT_FALSE(r.error);
+  const std::map<int, std::vector<int>> before = faces_by_chart(r);
+  ASSERT_GE(before.size(), 2u);
+  const std::vector<int>& mirrored = before.begin()->second;
+  const int collapsed = std::next(before.begin())->second.front();
+  double low = 1, high = 0;
+  for (const int f : mirrored)
+    for (int k = 0; k < 3; ++k) {
+      low = std::min(low, r.corner_uv(f, 2 * k));
+      high = std::max(high, r.corner_uv(f, 2 * k));
+    }
+  for (const int f : mirrored)
+    for (int k = 0; k < 3; ++k) r.corner_uv(f, 2 * k) = low + high - r.corner_uv(f, 2 * k);
+  for (int k = 1; k < 3; ++k) r.corner_uv.block(collapsed, 2 * k, 1, 2) = r.corner_uv.block(collapsed, 0, 1, 2);
+  const Eigen::MatrixXd unit_V = in_unit_box(m.V);
+  ASSERT_EQ(invalid_faces(unit_V, m.F, r.corner_uv).size(), mirrored.size() + 1);
+
+  const ChartsResult fixed = valid_as_stored(unit_V, m.F, 1, int(m.V.rows()), options, r);
+  ASSERT_FALSE(fixed.error);
+  EXPECT_TRUE(invalid_faces(unit_V, m.F, fixed.corner_uv).empty());
+  expect_valid_layout(m.F, fixed, &m.V);
+  // Faces grouped as before, but for the collapsed face, now alone.
+  std::set<std::vector<int>> groups_before, groups_after;
+  for (const auto& chart : before) {
+    std::vector<int> faces = chart.second;
+    faces.erase(std::remove(faces.begin(), faces.end(), collapsed), faces.end());
+    groups_before.insert(faces);
+  }
+  groups_before.insert({collapsed});
+  for (const auto& chart : faces_by_chart(fixed)) groups_after.insert(chart.second);
+  EXPECT_EQ(groups_after, groups_before);
+  EXPECT_EQ(fixed.charts.size(), before.size() + 1);
+}
+
+TEST(ValidAsStored, AValidResultOrAnErrorComesBackAsItWas) {
+  const testmesh::Mesh m = testmesh::hemisphere(6, 12);
+  const ChartOptions options;
+  const ChartsResult r = parameterize_charts(m.V, m.F, options);
+  ASSERT_FALSE(r.error);
+  const ChartsResult same = valid_as_stored(in_unit_box(m.V), m.F, 1, int(m.V.rows()), options, r);
+  EXPECT_EQ(same.corner_uv, r.corner_uv);
+  EXPECT_EQ(same.face_chart, r.face_chart);
+  EXPECT_EQ(same.notes, r.notes);
+  ChartsResult failed;
+  failed.error = {ErrorCode::SolverFailed, 1, ""};
+  EXPECT_EQ(valid_as_stored(in_unit_box(m.V), m.F, 1, int(m.V.rows()), options, failed).error.code, ErrorCode::SolverFailed);
+}
