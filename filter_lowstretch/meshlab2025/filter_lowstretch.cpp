@@ -53,7 +53,7 @@ std::map<std::string, QVariant> FilterLowStretchPlugin::applyFilter(const QActio
 
   const plugin::Run run = plugin::apply(m, parameters, cb, [this](const std::string& line) { log(line); });
   if (!run.error.empty()) fail(run.error);
-  const int written = plugin::written_data_mask<MeshModel>();
+  const int written = plugin::written_data_mask<MeshModel>(run.vertex_texcoords);
   // Every wedge now refers to texture 0. MeshLab 2022+ keeps the image with the mesh and saves it
   // next to the mesh file under the texture's name.
   m.clearTextures();

@@ -16,6 +16,7 @@
 #include "atlas/charts.h"
 #include "core/errors.h"
 #include "core/parameterize.h"
+#include "plugin_common/one_blas_thread.h"
 #include "plugin_common/option_table.h"
 #include "plugin_common/result_lines.h"
 #include "plugin_common/result_table.h"
@@ -95,10 +96,13 @@ std::string failure_line(const std::string& message);           // "<filter name
 // One run on a vcglib mesh: logs the header, converts the live elements, runs the core, logs the
 // result. `error` is empty on success, else the message for the user; the mesh is not touched
 // either way (the adapter writes the result with write_result after enabling the components).
+// OpenBLAS is held at one thread for the call, as the tool holds it (one_blas_thread.h), and its
+// count is restored after.
 struct Run {
   std::string error;
   ArrayRows rows;
   ChartsResult result;
+  bool vertex_texcoords = true;  // false: an atlas with seams, written without per-vertex texcoords
 };
 template <class MeshType>
 Run run(const MeshType& m, const ChartOptions& options, const std::function<void(const std::string&)>& log) {
@@ -107,6 +111,7 @@ Run run(const MeshType& m, const ChartOptions& options, const std::function<void
   Eigen::MatrixXi F;
   Run run;
   run.rows = mesh_to_arrays(m, V, F);
+  const OneBlasThread one_blas_thread;
   try {
     run.result = parameterize_charts(V, F, options);
   } catch (const std::exception& e) {  // e.g. std::bad_alloc: never let it reach MeshLab's event loop
@@ -122,10 +127,10 @@ Run run(const MeshType& m, const ChartOptions& options, const std::function<void
   return run;
 }
 
-// Writes a successful run into the mesh.
+// Writes a successful run into the mesh; returns whether every vertex has one texcoord (no seam).
 template <class MeshType>
-void write_result(MeshType& m, const Run& run) {
-  write_parameterization(m, run.rows, run.result);
+bool write_result(MeshType& m, const Run& run) {
+  return write_parameterization(m, run.rows, run.result);
 }
 
 
@@ -135,11 +140,11 @@ void write_result(MeshType& m, const Run& run) {
 QString checkerboard_path();
 
 // The MeshModel data the filter writes (wedge and vertex texcoords, vertex and face quality); the
-// MM_* names are the same in both MeshLab APIs.
+// MM_* names are the same in both MeshLab APIs. An atlas with seams has no per-vertex texcoords.
 template <class MeshModelType>
-int written_data_mask() {
-  return MeshModelType::MM_WEDGTEXCOORD | MeshModelType::MM_VERTTEXCOORD | MeshModelType::MM_VERTQUALITY |
-         MeshModelType::MM_FACEQUALITY;
+int written_data_mask(bool vertex_texcoords = true) {
+  return MeshModelType::MM_WEDGTEXCOORD | (vertex_texcoords ? int(MeshModelType::MM_VERTTEXCOORD) : 0) |
+         MeshModelType::MM_VERTQUALITY | MeshModelType::MM_FACEQUALITY;
 }
 
 // The filter as both adapters apply it to a MeshModel: options from the dialog's values, the
@@ -157,7 +162,10 @@ Run apply(MeshModelType& m, const List& values, CallBack* cb, const std::functio
   Run result = run(m.cm, options, log);
   if (!result.error.empty()) return result;
   m.updateDataMask(written_data_mask<MeshModelType>());
-  write_result(m.cm, result);
+  // Where a vertex has a texcoord per chart, a per-vertex texcoord would hold one of them: MeshLab's
+  // ASCII PLY writer takes it for every wedge of the vertex, moving seam corners into other charts.
+  result.vertex_texcoords = write_result(m.cm, result);
+  if (!result.vertex_texcoords) m.clearDataMask(MeshModelType::MM_VERTTEXCOORD);
   return result;
 }
 

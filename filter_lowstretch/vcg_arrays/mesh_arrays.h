@@ -51,9 +51,12 @@ ArrayRows mesh_to_arrays(const MeshType& m, Eigen::MatrixXd& V, Eigen::MatrixXi&
 // Writes the result into components the caller has made available: per-wedge texcoords
 // (texture index 0) from the per-corner UV (a seam vertex has one per side), per-vertex
 // texcoords (one of the vertex's wedges, the only one for a disk; (0, 0) if no face uses it),
-// per-vertex quality = vertex stretch and per-face quality = face stretch.
+// per-vertex quality = vertex stretch and per-face quality = face stretch. Returns whether every
+// vertex's wedges agree (no seam): otherwise the per-vertex texcoords hold one side of each seam
+// only, and a caller that keeps them lets exporters take them for the wedges' (MeshLab's ASCII PLY
+// writer does).
 template <class MeshType>
-void write_parameterization(MeshType& m, const ArrayRows& rows, const ChartsResult& result) {
+bool write_parameterization(MeshType& m, const ArrayRows& rows, const ChartsResult& result) {
   using TexScalar = typename MeshType::FaceType::TexCoordType::ScalarType;
   using VertexTexScalar = typename MeshType::VertexType::TexCoordType::ScalarType;
   for (size_t r = 0; r < rows.vertex_index.size(); ++r) {
@@ -74,6 +77,13 @@ void write_parameterization(MeshType& m, const ArrayRows& rows, const ChartsResu
     }
     f.Q() = typename MeshType::FaceType::QualityType(result.face_stretch(Eigen::Index(r)));
   }
+  for (size_t r = 0; r < rows.face_index.size(); ++r) {
+    const auto& f = m.face[size_t(rows.face_index[r])];
+    for (int k = 0; k < 3; ++k)
+      if (VertexTexScalar(f.cWT(k).U()) != f.cV(k)->cT().U() || VertexTexScalar(f.cWT(k).V()) != f.cV(k)->cT().V())
+        return false;
+  }
+  return true;
 }
 
 }  // namespace lowstretch

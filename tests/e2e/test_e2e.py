@@ -137,6 +137,45 @@ def overlapping_pixels(triangles, n=1024):
     return overlaps
 
 
+# meshlabserver's save masks: binary PLY, ASCII PLY ("sa"), OBJ; each must hold the atlas as made.
+SAVED_FORMATS = {"binary_ply": ("out.ply", ["-m", "wt", "vq", "fq"]), "ascii_ply": ("out.ply", ["-m", "wt", "vq", "fq", "sa"]),
+                 "obj": ("out.obj", ["-m", "wt"])}
+
+
+def area3(p, q, r):
+    u, v = [q[k] - p[k] for k in range(3)], [r[k] - p[k] for k in range(3)]
+    return math.dist((0, 0, 0), (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])) / 2
+
+
+@pytest.mark.parametrize("saved_format", list(SAVED_FORMATS))
+def test_saved_atlas(args, saved_format):
+    """An atlas with seams (a sphere cut open), saved by meshlabserver as binary PLY, ASCII PLY
+    and OBJ: every face's wedge texcoords in the file make a counter-clockwise triangle of positive
+    area. (MeshLab's ASCII PLY writer takes per-vertex texcoords for the wedges when a mesh has
+    them: the filter leaves none on an atlas.)"""
+    with_input(args, generated("sphere"))
+    input_path, name = prepare(args, generate.NON_DISKS)
+    file_name, mask = SAVED_FORMATS[saved_format]
+    out = os.path.join(args.work, file_name)
+    proc = meshlabserver(args.prefix, args.work, "meshlabserver.log",
+                         ["-i", input_path, "-o", out] + mask + ["-s", os.path.join(args.resources, "lowstretch.mlx")])
+    assert proc.returncode == 0 and os.path.isfile(out), f"meshlabserver applies the filter (exit code {proc.returncode})"
+    summary = CHARTS_RE.search(proc.stdout)
+    assert summary is not None and float(summary.group(3)) > 0, "the sphere is cut open (seams)"
+    if saved_format == "obj":
+        vertices, faces, corners = meshio.read_obj_with_texcoords(out)
+        triangles = [tuple(corners[3 * f:3 * f + 3]) for f in range(len(faces))]
+    else:
+        ply = meshio.read_ply(out)
+        assert ply.format == ("ascii" if saved_format == "ascii_ply" else "binary_little_endian"), ply.format
+        vertices, faces = ply.vertices(), ply.faces()
+        triangles = [((tc[0], tc[1]), (tc[2], tc[3]), (tc[4], tc[5])) for tc in ply.elements["face"].data["texcoord"]]
+    assert len(faces) == len(meshio.read_off(input_path)[1]) and all(None not in t for t in triangles), \
+        "every face is saved with its wedge texcoords"
+    bad = sum(1 for f, t in zip(faces, triangles) if area3(*(vertices[v] for v in f)) > 0 and not signed_area(*t) > 0)
+    assert bad == 0, f"no flipped or zero-area UV triangle in the {saved_format} file ({bad} of {len(faces)})"
+
+
 def test_charts(args, charts_case):
     """A mesh that is not a disk, with "Non-disk input: Make charts" (the default): per-wedge texcoords in
     [0,1]^2 on every face, no flipped or zero-area triangle, no overlap; the same charts, seams and

@@ -15,12 +15,13 @@ pytest there), applies the filter and writes what it measured; the pytest tests 
     pymeshlab.load_plugin), run as written from a folder whose build/ is this build tree.
 
   python3 -B -m pytest -p no:cacheprovider tests/meshlab2025/test_pymeshlab.py --pymeshlab-plugin SO \
-      --ml2025-plugin SO --venv DIR [--venv-python PYTHON] [--cgal-meshes DIR] [--readme README.md --build-dir DIR]
+      --ml2025-plugin SO --venv DIR [--cgal-meshes DIR] [--readme README.md --build-dir DIR]
 
 venv_python() is also used by tests/e2e/bake.py.
 """
 import argparse
 import json
+import math
 import os
 import re
 import subprocess
@@ -39,17 +40,18 @@ KEYS = {"l2_stretch": float, "linf_stretch": float, "edge_distortion": float, "a
         "efficiency": float, "max_chart_stretch": float, "subtexel_triangles": int,
         "float_collapsed": int}
 DISK, BAD, EXPECT = "mannequin-devil.off", "head.off", "3 boundary loops"  # in --cgal-meshes
+# How the atlas of BAD is saved: name, file, binary (None: OBJ).
+SAVED = [("ascii_ply", "atlas_ascii.ply", False), ("binary_ply", "atlas_binary.ply", True), ("obj", "atlas.obj", None)]
 
 
-def venv_python(venv, base=sys.executable):
-    """The environment's Python, with pymeshlab installed (pip runs only when it is missing or
-    another version); `base` creates the environment when it does not exist."""
+def venv_python(venv):
+    """The environment's Python, which must have pymeshlab 2025.7.post1: .ci/setup-meshlab2025
+    installs it (~/.cache/filter_lowstretch/scan-venv); a test only uses it, never installs."""
     python = os.path.join(venv, "bin", "python")
-    if not os.path.isfile(python):
-        subprocess.run([base, "-m", "venv", venv], check=True)
-    have = subprocess.run([python, "-m", "pip", "show", "pymeshlab"], capture_output=True, text=True).stdout
+    have = subprocess.run([python, "-m", "pip", "show", "pymeshlab"], capture_output=True,
+                          text=True).stdout if os.path.isfile(python) else ""
     if "Version: 2025.7.post1" not in have:
-        subprocess.run([python, "-m", "pip", "install", "-q", "--disable-pip-version-check", PYMESHLAB], check=True)
+        raise RuntimeError(f"{venv} has no {PYMESHLAB}: run `bash .ci/setup-meshlab2025`, which installs it")
     return python
 
 
@@ -129,6 +131,15 @@ def inside(args):
 
     facts["charts"] = ms.apply_filter(NAME)
     facts["charts_uv"] = texcoord_facts(np, ms.current_mesh())[0]
+    # The atlas saved as users save it: ASCII and binary PLY, OBJ (read back by the tests).
+    facts["saved"] = {}
+    for name, file_name, binary in SAVED:
+        path = os.path.join(os.path.dirname(os.path.abspath(args.output)), file_name)
+        if binary is None:
+            ms.save_current_mesh(path)
+        else:
+            ms.save_current_mesh(path, binary=binary)
+        facts["saved"][name] = path
 
     # The atlas of the disk, cut where it stretches more than 1.1, at another texture size.
     ms.load_new_mesh(args.disk)
@@ -168,7 +179,7 @@ if pytest is not None:
     @pytest.fixture(scope="module")
     def python(request):
         venv = pytest_options.required(request.config, "venv")
-        return venv_python(venv, request.config.getoption("venv_python"))
+        return venv_python(venv)
 
     @pytest.fixture(scope="module")
     def facts(request, python, tmp_path_factory):
@@ -231,6 +242,38 @@ def test_quality(facts):
     assert abs(facts["quality_l2"] - l2) <= 1e-9 * l2, \
         f"sqrt(sum A q^2 / sum A) over the per-face quality {facts['quality_l2']:.10g} = returned L2 stretch {l2:.10g}"
     assert facts["has_vertex_scalar"], "the mesh has per-vertex quality"
+
+
+def saved_triangles(path):
+    """Vertices, faces and each face's UV triangle, as the file holds them (PLY wedges or OBJ vt)."""
+    import meshio
+    if path.endswith(".obj"):
+        vertices, faces, corners = meshio.read_obj_with_texcoords(path)
+        return vertices, faces, [tuple(corners[3 * f:3 * f + 3]) for f in range(len(faces))]
+    ply = meshio.read_ply(path)
+    texcoords = ply.elements["face"].data["texcoord"]
+    return ply.vertices(), ply.faces(), [((t[0], t[1]), (t[2], t[3]), (t[4], t[5])) for t in texcoords]
+
+
+@pytest.mark.parametrize("saved", [s[0] for s in SAVED])
+def test_saved_atlas(facts, saved):
+    """The atlas of a mesh with holes (seams), saved by pymeshlab as ASCII PLY, binary PLY and OBJ:
+    in every file, every face of positive 3D area has a counter-clockwise UV triangle of positive
+    area (MeshLab's ASCII PLY writer takes per-vertex texcoords for the wedges when a mesh has
+    them: the filter leaves none on an atlas)."""
+    assert facts["charts"]["seam_length"] > 0, "the mesh is cut into charts (seams)"
+    vertices, faces, triangles = saved_triangles(facts["saved"][saved])
+    assert len(faces) == facts["charts_uv"]["faces"] and all(None not in t for t in triangles), \
+        "every face is saved with its wedge texcoords"
+    area3 = [math.dist((0, 0, 0), cross(vertices[f[0]], vertices[f[1]], vertices[f[2]])) for f in faces]
+    area_uv = [(b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]) for a, b, c in triangles]
+    bad = sum(1 for a3, au in zip(area3, area_uv) if a3 > 0 and not au > 0)
+    assert bad == 0, f"no flipped or zero-area UV triangle in the {saved} file ({bad} of {len(faces)})"
+
+
+def cross(p, q, r):
+    u, v = [q[k] - p[k] for k in range(3)], [r[k] - p[k] for k in range(3)]
+    return (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
 
 
 def test_texture(facts):
