@@ -7,8 +7,11 @@ file (test_atlas[NAME]; test_fewer_seams_atlas adds --fewer-seams on two defects
 pivoting) `lowstretch FILE -o out.obj --json` must exit 0, write every input face with texture
 coordinates inside the gutter, and leave no flipped UV triangle and no zero-area one on a face with
 3D area (a face of zero 3D area may have zero UV area, never a negative one), as read back from
-the OBJ; the triangle soup of make_defects.py is refused with the weld message
-(TestDefects::test_soup_refused). The closed mesh is CGAL's armadillo (--cgal-meshes).
+the OBJ; TestPointSets: the same on CGAL's real scanner point sets reconstructed by MeshLab
+(tests/bench/make_point_set_scans.py); the triangle soup of make_defects.py is refused with the weld message
+(TestDefects::test_soup_refused). The closed mesh is CGAL's armadillo (--cgal-meshes), or with
+--scan-size small its Chinese dragon (under half the size) and smaller reconstructions of it
+(make_reconstructions.py --small), for the sanitizer build.
 
   python3 -B -m pytest -p no:cacheprovider tests/e2e/test_scan_atlas.py::TestDefects --tool build/lowstretch
   python3 -B -m pytest -p no:cacheprovider tests/e2e/test_scan_atlas.py::TestReconstructions \
@@ -29,7 +32,12 @@ import pytest_options  # noqa: E402
 
 GUTTER = 2 / 1024  # the default gutter over the default texture size
 ZERO_AREA = 1e-12  # of the layout's square, as tests/bench/atlas_table.py counts zero-area triangles
-CLOSED_MESH = "armadillo.off"  # in --cgal-meshes
+# The closed mesh (in --cgal-meshes) and the points sampled on it for the reconstructions, by
+# --scan-size: small puts the same defects into a mesh under half the size, for the sanitizer build.
+SCAN_SIZES = {"full": ("armadillo.off", []), "small": ("ChineseDragon-10kv.off", ["--small"])}
+# CGAL's real scanner point sets (its data/points_3, beside --cgal-meshes) reconstructed by
+# tests/bench/make_point_set_scans.py, by --scan-size: the larger ones are for the bench.
+POINT_SETS = {"full": ["hippo1.ply", "hippo2.ply", "oni.ply", "kitten.xyz"], "small": ["hippo2.ply"]}
 DEFECTS = ["fins", "slivers", "duplicates", "dust", "collapsed", "dropouts", "holes200", "all"]
 RECONSTRUCTIONS = ["ball_pivoting", "vcg", "poisson", "sdf_mc"]
 
@@ -45,9 +53,9 @@ def area_uv(a, b, c):
     return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]))
 
 
-def make_scans(python, script, mesh, work):
+def make_scans(python, script, mesh, work, *options):
     """The scans of mesh, written into work by tests/bench/SCRIPT run by python."""
-    made = subprocess.run([python, os.path.join(HERE, "..", "bench", script), mesh, str(work)],
+    made = subprocess.run([python, os.path.join(HERE, "..", "bench", script), mesh, str(work), *options],
                           capture_output=True, text=True)
     assert made.returncode == 0, f"{script} writes the meshes ({made.stderr.strip()[-300:]})"
     return work
@@ -59,8 +67,13 @@ def tool(request):
 
 
 @pytest.fixture(scope="session")
-def closed_mesh(request):
-    return os.path.join(pytest_options.required(request.config, "cgal_meshes"), CLOSED_MESH)
+def scan_size(request):
+    return SCAN_SIZES[request.config.getoption("scan_size")]
+
+
+@pytest.fixture(scope="session")
+def closed_mesh(request, scan_size):
+    return os.path.join(pytest_options.required(request.config, "cgal_meshes"), scan_size[0])
 
 
 def check_atlas(tool, path, work, options=()):
@@ -113,11 +126,31 @@ class TestDefects:
             f"soup.off: refused with the weld message, nothing written ({soup.returncode}: {soup.stderr.strip()[:120]})"
 
 
+class TestPointSets:
+    """Real scanner data: CGAL's point sets, reconstructed as MeshLab users do (ball pivoting,
+    screened Poisson, the VCG merge)."""
+
+    @pytest.fixture(scope="class")
+    def scans(self, request, tmp_path_factory):
+        config = request.config
+        python = pytest_options.required(config, "scan_python")
+        points = os.path.join(os.path.dirname(os.path.abspath(pytest_options.required(config, "cgal_meshes"))), "points_3")
+        work = tmp_path_factory.mktemp("point_sets")
+        return make_scans(python, "make_point_set_scans.py", points, work, *POINT_SETS[config.getoption("scan_size")])
+
+    def test_atlas(self, tool, scans):
+        made = sorted(p for p in os.listdir(scans) if p.endswith(".off"))
+        assert len(made) >= 2, f"the point sets are reconstructed ({made})"
+        for name in made:
+            check_atlas(tool, str(scans / name), str(scans))
+
+
 class TestReconstructions:
     @pytest.fixture(scope="class")
-    def scans(self, request, tmp_path_factory, closed_mesh):
+    def scans(self, request, tmp_path_factory, closed_mesh, scan_size):
         python = pytest_options.required(request.config, "scan_python")
-        return make_scans(python, "make_reconstructions.py", closed_mesh, tmp_path_factory.mktemp("reconstructions"))
+        return make_scans(python, "make_reconstructions.py", closed_mesh, tmp_path_factory.mktemp("reconstructions"),
+                          *scan_size[1])
 
     @pytest.mark.parametrize("name", RECONSTRUCTIONS)
     def test_atlas(self, tool, scans, name):
