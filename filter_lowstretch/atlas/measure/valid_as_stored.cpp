@@ -130,70 +130,96 @@ struct Moved {
   int faces = 0, charts = 0;
 };
 
-// One round: the charts holding a flipped face mapped again (`map_again`; taken apart where they
-// are no disk), every other invalid face a chart of its own, laid out in the strip; stored and
-// measured again.
-ChartsResult with_invalid_faces_moved(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, double unit, int vertex_rows,
-                                      const ChartOptions& options, ChartsResult result, const std::vector<int>& invalid,
-                                      bool map_again, Moved& moved) {
-  const size_t chart_count = result.charts.size();
-  std::vector<std::vector<int>> faces_of(chart_count);
-  for (Eigen::Index f = 0; f < F.rows(); ++f) faces_of[size_t(result.face_chart[size_t(f)])].push_back(int(f));
-  std::vector<char> alone(size_t(F.rows()), 0), in_piece(size_t(F.rows()), 0), folded(chart_count, 0);
+// What leaves its chart in one round: the charts mapped again, then the faces alone, as pieces.
+struct Moving {
+  std::vector<char> moves;  // per face
+  std::vector<Piece> pieces;
+  size_t mapped = 0;        // pieces[0, mapped) are charts mapped again
+};
+
+// The charts holding a flipped face mapped again (`map_again`; taken apart where they are no
+// disk), every other invalid face alone.
+Moving pieces_to_move(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const ChartOptions& options,
+                      const ChartsResult& result, const std::vector<std::vector<int>>& faces_of,
+                      const std::vector<int>& invalid, bool map_again, Moved& moved) {
+  Moving m;
+  std::vector<char> alone(size_t(F.rows()), 0), folded(faces_of.size(), 0);
   for (const int f : invalid) {
     alone[size_t(f)] = 1;
     if (corner_area(result.corner_uv, f) < 0) folded[size_t(result.face_chart[size_t(f)])] = 1;
   }
-  std::vector<Piece> pieces;
-  for (size_t c = 0; c < chart_count && map_again; ++c) {
+  for (size_t c = 0; c < faces_of.size() && map_again; ++c) {
     if (!folded[c]) continue;
     Piece piece;
     const bool disk = mapped_again(unit_V, F, faces_of[c], options, piece);
-    for (const int f : faces_of[c]) (disk ? in_piece : alone)[size_t(f)] = 1;
+    for (const int f : faces_of[c]) alone[size_t(f)] = !disk;
     if (disk) {
-      for (const int f : faces_of[c]) alone[size_t(f)] = 0;
-      pieces.push_back(std::move(piece));
+      m.pieces.push_back(std::move(piece));
       ++moved.charts;
     }
   }
-  const size_t mapped_pieces = pieces.size();
-  double moved_area = 0, area = 0;
-  for (Eigen::Index f = 0; f < F.rows(); ++f) {
-    if (alone[size_t(f)]) pieces.push_back(single_face(unit_V, F, int(f)));
-    moved.faces += alone[size_t(f)];
-    area += face_area_3d(unit_V, F, f);
-    if (alone[size_t(f)] || in_piece[size_t(f)]) moved_area += face_area_3d(unit_V, F, f);
-  }
-  const bool none_stays = std::count(alone.begin(), alone.end(), 1) + std::count(in_piece.begin(), in_piece.end(), 1) == F.rows();
-  const Strip strip = strip_for(pieces.size(), area > 0 ? moved_area / area : 0, none_stays, options);
+  m.mapped = m.pieces.size();
+  m.moves.assign(size_t(F.rows()), 0);
+  for (const Piece& piece : m.pieces)
+    for (const int f : piece.faces) m.moves[size_t(f)] = 1;
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    if (alone[size_t(f)]) {
+      m.pieces.push_back(single_face(unit_V, F, int(f)));
+      m.moves[size_t(f)] = 1;
+      ++moved.faces;
+    }
+  return m;
+}
 
-  // The layout that stays, back in [0,1]^2 (store() moves it inside the gutter again), below the strip.
-  const double g = options.gutter / options.texture_size;
-  Eigen::MatrixXd uv = ((result.corner_uv.array() - g) / (1 - 2 * g) * (1 - strip.height)).matrix();
-  for (size_t p = 0; p < pieces.size(); ++p) put_in_cell(pieces[p], p, strip, uv);
-
-  std::vector<Chart> charts;
-  std::vector<std::vector<int>> new_faces_of;
-  std::vector<int> face_chart(size_t(F.rows()));
-  for (size_t c = 0; c < chart_count; ++c) {
+// The charts after a round: the old ones with the faces that stay (if any), then the pieces.
+void regroup(const ChartsResult& result, const std::vector<std::vector<int>>& faces_of, const Moving& m,
+             std::vector<Chart>& charts, std::vector<std::vector<int>>& new_faces_of, std::vector<int>& face_chart) {
+  for (size_t c = 0; c < faces_of.size(); ++c) {
     std::vector<int> staying;
     for (const int f : faces_of[c])
-      if (!alone[size_t(f)] && !in_piece[size_t(f)]) staying.push_back(f);
+      if (!m.moves[size_t(f)]) staying.push_back(f);
     if (staying.empty()) continue;
     for (const int f : staying) face_chart[size_t(f)] = int(charts.size());
     charts.push_back(result.charts[c]);
     charts.back().faces = int(staying.size());
     new_faces_of.push_back(std::move(staying));
   }
-  for (size_t p = 0; p < pieces.size(); ++p) {
+  for (size_t p = 0; p < m.pieces.size(); ++p) {
     Chart chart;
-    chart.faces = int(pieces[p].faces.size());
-    chart.kept_whole = p < mapped_pieces ? "mapped again onto a square where its map folded"
-                                         : "a face on its own, where its chart's map was invalid";
-    for (const int f : pieces[p].faces) face_chart[size_t(f)] = int(charts.size());
+    chart.faces = int(m.pieces[p].faces.size());
+    chart.kept_whole = p < m.mapped ? "mapped again onto a square where its map folded"
+                                    : "a face on its own, where its chart's map was invalid";
+    for (const int f : m.pieces[p].faces) face_chart[size_t(f)] = int(charts.size());
     charts.push_back(chart);
-    new_faces_of.push_back(pieces[p].faces);
+    new_faces_of.push_back(m.pieces[p].faces);
   }
+}
+
+// One round: the pieces laid out in the strip, the rest of the layout below it; stored and
+// measured again.
+ChartsResult with_invalid_faces_moved(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, double unit, int vertex_rows,
+                                      const ChartOptions& options, ChartsResult result, const std::vector<int>& invalid,
+                                      bool map_again, Moved& moved) {
+  std::vector<std::vector<int>> faces_of(result.charts.size());
+  for (Eigen::Index f = 0; f < F.rows(); ++f) faces_of[size_t(result.face_chart[size_t(f)])].push_back(int(f));
+  const Moving m = pieces_to_move(unit_V, F, options, result, faces_of, invalid, map_again, moved);
+  double moved_area = 0, area = 0;
+  for (Eigen::Index f = 0; f < F.rows(); ++f) {
+    area += face_area_3d(unit_V, F, f);
+    if (m.moves[size_t(f)]) moved_area += face_area_3d(unit_V, F, f);
+  }
+  const bool none_stays = std::count(m.moves.begin(), m.moves.end(), 1) == F.rows();
+  const Strip strip = strip_for(m.pieces.size(), area > 0 ? moved_area / area : 0, none_stays, options);
+
+  // The layout that stays, back in [0,1]^2 (store() moves it inside the gutter again), below the strip.
+  const double g = options.gutter / options.texture_size;
+  Eigen::MatrixXd uv = ((result.corner_uv.array() - g) / (1 - 2 * g) * (1 - strip.height)).matrix();
+  for (size_t p = 0; p < m.pieces.size(); ++p) put_in_cell(m.pieces[p], p, strip, uv);
+
+  std::vector<Chart> charts;
+  std::vector<std::vector<int>> new_faces_of;
+  std::vector<int> face_chart(size_t(F.rows()));
+  regroup(result, faces_of, m, charts, new_faces_of, face_chart);
   result.seam_length += unit * (between_charts(unit_V, F, face_chart) - between_charts(unit_V, F, result.face_chart));
   result.charts = std::move(charts);
   result.face_chart = std::move(face_chart);
