@@ -13,6 +13,7 @@
 #include <boost/make_shared.hpp>
 #include <boost/range/iterator_range.hpp>
 
+#include "core/metis_lock.h"
 #include "core/reused_coarsening.h"
 
 namespace lowstretch {
@@ -236,7 +237,10 @@ bool LaplacianSolver::solve_direct(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& 
     // accurate without iterative refinement (which would triple the cost of a solve).
     lu_.umfpackControl()(UMFPACK_ORDERING) = matrix_.rows() < kMetisMinimumRows ? UMFPACK_ORDERING_AMD : UMFPACK_ORDERING_METIS;
     lu_.umfpackControl()(UMFPACK_IRSTEP) = 0;
-    lu_.analyzePattern(column_major);
+    {
+      const std::lock_guard<std::mutex> one_ordering_at_a_time(metis_lock());
+      lu_.analyzePattern(column_major);
+    }
     analyzed_ = true;
   }
   lu_.factorize(column_major);

@@ -12,6 +12,7 @@
 #include <limits>
 #include <vector>
 
+#include "core/metis_lock.h"
 #include "core/stretch.h"
 
 namespace lowstretch {
@@ -255,7 +256,10 @@ Eigen::MatrixXd refine_stretch(const DiskMesh& disk, const Eigen::MatrixXd& uv0,
   // factorization.
   newton.cholmod().nmethods = 1;
   newton.cholmod().method[0].ordering = CHOLMOD_METIS;
-  newton.analyzePattern(layout.H);
+  {
+    const std::lock_guard<std::mutex> one_ordering_at_a_time(metis_lock());
+    newton.analyzePattern(layout.H);
+  }
   Eigen::MatrixXd grad, d = Eigen::MatrixXd::Zero(n, 2);
   Eigen::VectorXd g(2 * count);
   for (int it = 0; it < options.max_iterations; ++it) {
