@@ -92,6 +92,16 @@ void measure_layout(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, int
   }
 }
 
+// "chart 3", "charts 1, 4, 9", "charts 1, 4, 9 and 812 more".
+std::string charts_text(const std::vector<int>& charts) {
+  std::string text = charts.size() == 1 ? "chart " : "charts ";
+  for (size_t i = 0; i < charts.size() && i < 3; ++i) text += (i ? ", " : "") + std::to_string(charts[i]);
+  if (charts.size() > 3) text += " and " + std::to_string(charts.size() - 3) + " more";
+  return text;
+}
+
+}  // namespace
+
 // 3D length of the edges whose two faces are in different charts.
 double length_between_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const std::vector<int>& face_chart) {
   const std::vector<int> twin = opposite_half_edges(F);
@@ -108,16 +118,6 @@ double corner_area(const Eigen::MatrixXd& corner_uv, Eigen::Index f) {
   const auto c = [&](int k) { return Eigen::Vector2d(corner_uv.block(f, 2 * k, 1, 2).transpose()); };
   return signed_uv_area(c(0), c(1), c(2));
 }
-
-// "chart 3", "charts 1, 4, 9", "charts 1, 4, 9 and 812 more".
-std::string charts_text(const std::vector<int>& charts) {
-  std::string text = charts.size() == 1 ? "chart " : "charts ";
-  for (size_t i = 0; i < charts.size() && i < 3; ++i) text += (i ? ", " : "") + std::to_string(charts[i]);
-  if (charts.size() > 3) text += " and " + std::to_string(charts.size() - 3) + " more";
-  return text;
-}
-
-}  // namespace
 
 ChartsResult failed_result(Error error) {
   ChartsResult result;

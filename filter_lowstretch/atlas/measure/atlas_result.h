@@ -25,6 +25,12 @@ ChartsResult atlas_of(std::vector<SolvedChart> charts, std::vector<int> guests, 
 void store(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, int vertex_rows,
            const std::vector<std::vector<int>>& faces_of, const ChartOptions& options, ChartsResult& result);
 
+// 3D length of the edges whose two faces are in different charts (face_chart: each face's).
+double length_between_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const std::vector<int>& face_chart);
+
+// The signed UV area of face f's corners (corner_uv: #F x 6).
+double corner_area(const Eigen::MatrixXd& corner_uv, Eigen::Index f);
+
 // The measures of `from` (stretch, distortions, flips) into `to`, whose pass and timings stay.
 void copy_measures(const PassMetrics& from, PassMetrics& to);
 

@@ -8,7 +8,6 @@
 
 #include "atlas/bound/cut_invalid_charts.h"
 #include "atlas/measure/atlas_result.h"
-#include "core/half_edges.h"
 #include "core/parameterize.h"
 #include "core/stretch.h"
 
@@ -27,11 +26,6 @@ struct Piece {
   std::vector<int> faces;
   Eigen::MatrixXd corner_uv;
 };
-
-double corner_area(const Eigen::MatrixXd& corner_uv, Eigen::Index f) {
-  const auto c = [&](int k) { return Eigen::Vector2d(corner_uv.block(f, 2 * k, 1, 2).transpose()); };
-  return signed_uv_area(c(0), c(1), c(2));
-}
 
 // A face alone: its triangle laid flat, counter-clockwise; a needle (or a face without area) as a
 // right triangle.
@@ -111,18 +105,6 @@ void put_in_cell(const Piece& piece, size_t p, const Strip& strip, Eigen::Matrix
       const Eigen::Vector2d corner = piece.corner_uv.block(Eigen::Index(j), 2 * k, 1, 2).transpose();
       uv.block(piece.faces[j], 2 * k, 1, 2) = (origin + scale * (corner - box.min())).transpose();
     }
-}
-
-// 3D length of the edges between faces of different charts (unit box).
-double between_charts(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const std::vector<int>& face_chart) {
-  const std::vector<int> twin = opposite_half_edges(F);
-  double length = 0;
-  for (int h = 0; h < int(twin.size()); ++h) {
-    const int t = twin[size_t(h)];
-    if (t > h && face_chart[size_t(h / 3)] != face_chart[size_t(t / 3)])
-      length += (unit_V.row(half_edge_tail(F, h)) - unit_V.row(half_edge_head(F, h))).norm();
-  }
-  return length;
 }
 
 // How a round went: faces made charts of their own, charts mapped again.
@@ -220,7 +202,7 @@ ChartsResult with_invalid_faces_moved(const Eigen::MatrixXd& unit_V, const Eigen
   std::vector<std::vector<int>> new_faces_of;
   std::vector<int> face_chart(size_t(F.rows()));
   regroup(result, faces_of, m, charts, new_faces_of, face_chart);
-  result.seam_length += unit * (between_charts(unit_V, F, face_chart) - between_charts(unit_V, F, result.face_chart));
+  result.seam_length += unit * (length_between_charts(unit_V, F, face_chart) - length_between_charts(unit_V, F, result.face_chart));
   result.charts = std::move(charts);
   result.face_chart = std::move(face_chart);
   result.corner_uv = std::move(uv);
