@@ -666,7 +666,10 @@ ChartsResult disk_or_atlas_of_whole(const Eigen::MatrixXd& V, const Eigen::Matri
   ChartsResult disk;
   double unit = 1;
   const Eigen::MatrixXd unit_V = is_disk ? unit_box_of_used(V, F, unit) : Eigen::MatrixXd();
-  const auto valid = [&](const ChartsResult& r) { return !r.error && invalid_faces(unit_V, F, r.corner_uv).empty(); };
+  // Specks are left to the last step, valid_as_stored.
+  const auto valid = [&](const ChartsResult& r) {
+    return !r.error && without_specks(unit_V, F, r.corner_uv, invalid_faces(unit_V, F, r.corner_uv)).empty();
+  };
   bool disk_valid = false;
   if (is_disk) {
     disk = disk_result(V, F, options, std::move(whole), unit_V, start);

@@ -101,6 +101,29 @@ Mesh with_specks(const Mesh& m, int count, int per_row, double first_x) {
   return out;
 }
 
+Mesh with_tiny_triangles(const Mesh& m, const std::vector<int>& faces, double scale) {
+  Mesh out;
+  out.V.resize(m.V.rows() + 3 * Eigen::Index(faces.size()), 3);
+  out.F.resize(m.F.rows() + 6 * Eigen::Index(faces.size()), 3);
+  out.V.topRows(m.V.rows()) = m.V;
+  out.F.topRows(m.F.rows()) = m.F;
+  Eigen::Index v = m.V.rows(), f = m.F.rows();
+  for (const int face : faces) {
+    const int a = m.F(face, 0), b = m.F(face, 1), c = m.F(face, 2);
+    const Eigen::RowVector3d centre = (m.V.row(a) + m.V.row(b) + m.V.row(c)) / 3;
+    const int p = int(v), q = int(v + 1), r = int(v + 2);
+    for (const int corner : {a, b, c}) out.V.row(v++) = centre + scale * (m.V.row(corner) - centre);
+    out.F.row(face) << p, q, r;
+    out.F.row(f++) << a, b, q;
+    out.F.row(f++) << a, q, p;
+    out.F.row(f++) << b, c, r;
+    out.F.row(f++) << b, r, q;
+    out.F.row(f++) << c, a, p;
+    out.F.row(f++) << c, p, r;
+  }
+  return out;
+}
+
 Mesh soup(const Mesh& mesh) {
   Mesh m;
   m.V.resize(3 * mesh.F.rows(), 3);

@@ -40,6 +40,9 @@ Mesh joined(const Mesh& a, const Mesh& b, double scale, const Eigen::RowVector3d
 // m with `count` specks of scan debris after it: loose right triangles 0.01 on a side, in rows of
 // `per_row` one unit apart, the first at (first_x, 0, 0).
 Mesh with_specks(const Mesh& m, int count, int per_row, double first_x);
+// m with each of `faces` (a, b, c) replaced by seven: a triangle of its shape `scale` times its
+// size at its centroid, and the ring between the two; a merged scan's specks inside a surface.
+Mesh with_tiny_triangles(const Mesh& m, const std::vector<int>& faces, double scale);
 // The same faces, each with three vertices of its own at its corners' positions: a triangle
 // soup, as STL files store a mesh.
 Mesh soup(const Mesh& mesh);

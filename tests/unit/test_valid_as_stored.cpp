@@ -147,3 +147,40 @@ TEST(ValidAsStored, AValidResultOrAnErrorComesBackAsItWas) {
   failed.error = {ErrorCode::SolverFailed, 1, ""};
   EXPECT_EQ(valid_as_stored(in_unit_box(m.V), m.F, 1, int(m.V.rows()), options, failed).error.code, ErrorCode::SolverFailed);
 }
+
+// A merged scan's specks inside its surface: well-shaped triangles 1e-5 of their faces' size,
+// whose UV area at the texture's density is under the least area. They are told apart from a
+// squashed face; their charts are left whole, and the last step moves each alone.
+TEST(ValidAsStored, SpecksInsideASurfaceAreMovedAloneAndTheirChartsKept) {
+  const testmesh::Mesh base = testmesh::sphere(12, 24);
+  const ChartOptions options;
+  const ChartsResult plain = parameterize_charts(base.V, base.F, options);
+  ASSERT_FALSE(plain.error);
+  std::vector<int> specks;
+  for (int f = 5; f < base.F.rows(); f += 47) specks.push_back(f);
+  const testmesh::Mesh m = testmesh::with_tiny_triangles(base, specks, 1e-5);
+  const Eigen::MatrixXd unit_V = in_unit_box(m.V);
+  const ChartsResult r = parameterize_charts(m.V, m.F, options);
+  ASSERT_FALSE(r.error) << r.error.detail;
+  EXPECT_TRUE(invalid_faces(unit_V, m.F, r.corner_uv).empty());
+  expect_valid_layout(m.F, r, &m.V);
+  const std::map<int, std::vector<int>> charts = faces_by_chart(r);
+  for (const int f : specks) EXPECT_EQ(charts.at(r.face_chart[size_t(f)]).size(), 1u) << "speck " << f;
+  EXPECT_EQ(r.charts.size(), plain.charts.size() + specks.size());
+
+  // Before the last step: the specks are invalid, but no face is squashed.
+  ChartsResult unrepaired = r;
+  for (const int f : specks)
+    for (int k = 1; k < 3; ++k)  // each speck 1e-6 on a side (under the least area, not flipped)
+      unrepaired.corner_uv.block(f, 2 * k, 1, 2) =
+          unrepaired.corner_uv.block(f, 0, 1, 2) + 1e-6 * Eigen::RowVector2d(k == 1 ? 1.0 : 0.5, k == 1 ? 0.0 : 1.0);
+  const std::vector<int> invalid = invalid_faces(unit_V, m.F, unrepaired.corner_uv);
+  EXPECT_EQ(invalid.size(), specks.size());
+  EXPECT_TRUE(without_specks(unit_V, m.F, unrepaired.corner_uv, invalid).empty());
+  // A face of ordinary size squashed to the same UV area is no speck.
+  const int squashed = r.face_chart[0] == r.face_chart[size_t(specks[0])] ? 1 : 0;
+  unrepaired.corner_uv.block(squashed, 2, 1, 2) = unrepaired.corner_uv.block(squashed, 0, 1, 2) + Eigen::RowVector2d(1e-6, 0);
+  unrepaired.corner_uv.block(squashed, 4, 1, 2) = unrepaired.corner_uv.block(squashed, 0, 1, 2) + Eigen::RowVector2d(0.5e-6, 1e-6);
+  EXPECT_EQ(without_specks(unit_V, m.F, unrepaired.corner_uv, invalid_faces(unit_V, m.F, unrepaired.corner_uv)),
+            std::vector<int>{squashed});
+}

@@ -46,9 +46,12 @@ struct AtlasTuning {
   // A UV triangle under this share of the texture is lost to every texture size and to rounding
   // (a 1024^2 texel is 1e-6 of it): a sliver of a reconstruction, mapped to scale.
   double least_uv_area = 1e-11;
-  // Rounds of cutting the charts with invalid faces and laying out again; the last cuts them into
-  // single faces.
+  // Rounds of cutting the charts with invalid faces and laying out again (what is left goes to
+  // valid_as_stored).
   int most_repair_rounds = 3;
+  // A face under the least UV area is a speck, not squashed, if its UV area over its 3D area is at
+  // least this share of the layout's.
+  double speck_density = 0.25;
 
   // --- Models made of faces (CAD parts) ---
   // Normals more than this apart make an edge sharp: a lower angle cuts curved faces into more

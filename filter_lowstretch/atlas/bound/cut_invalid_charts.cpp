@@ -1,6 +1,7 @@
 #include "atlas/bound/cut_invalid_charts.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "atlas/base/tuning.h"
@@ -35,17 +36,34 @@ std::vector<std::vector<int>> connected_parts(const std::vector<int>& faces, con
 
 }  // namespace
 
-std::vector<int> invalid_faces(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& corner_uv) {
+std::vector<int> invalid_faces(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& corner_uv,
+                               double least_area) {
   std::vector<int> invalid;
   for (Eigen::Index f = 0; f < F.rows(); ++f)
     // A flat face may map to zero area; folded, its neighbours overlap.
-    if (is_flat_face(unit_V, F, f) ? stored_area(corner_uv, f) < 0 : !(stored_area(corner_uv, f) > kTuning.least_uv_area))
+    if (is_flat_face(unit_V, F, f) ? stored_area(corner_uv, f) < 0 : !(stored_area(corner_uv, f) > least_area))
       invalid.push_back(int(f));
   return invalid;
 }
 
+std::vector<int> without_specks(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& corner_uv,
+                                const std::vector<int>& invalid) {
+  if (invalid.empty()) return invalid;
+  double uv_area = 0, area_3d = 0;
+  for (Eigen::Index f = 0; f < F.rows(); ++f) {
+    uv_area += std::abs(stored_area(corner_uv, f));
+    area_3d += face_area_3d(unit_V, F, f);
+  }
+  const double density = area_3d > 0 ? uv_area / area_3d : 0;
+  std::vector<int> kept;
+  for (const int f : invalid)
+    if (!(stored_area(corner_uv, f) > 0 && stored_area(corner_uv, f) >= kTuning.speck_density * density * face_area_3d(unit_V, F, f)))
+      kept.push_back(f);
+  return kept;
+}
+
 int cut_invalid_charts(std::vector<SolvedChart>& charts, std::vector<int>& guests, const std::vector<int>& face_chart,
-                        const std::vector<int>& invalid, const std::vector<int>& stretched, bool into_faces,
+                        const std::vector<int>& invalid, const std::vector<int>& stretched,
                         const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const ChartOptions& options,
                         std::vector<int>& flat) {
   std::vector<char> taken(size_t(F.rows()), 0), cut(charts.size(), 0), split(charts.size(), 0);
@@ -77,8 +95,7 @@ int cut_invalid_charts(std::vector<SolvedChart>& charts, std::vector<int>& guest
   for (size_t c = 0; c < charts.size(); ++c) {
     if (!cut[c]) continue;
     for (const int f : charts[c].faces)
-      if (into_faces || taken[size_t(f)]) add_piece({f});
-    if (into_faces) continue;
+      if (taken[size_t(f)]) add_piece({f});
     for (std::vector<int>& part : split[c] ? split_chart(unit_V, F, twin, charts[c].faces) : connected_parts(charts[c].faces, taken, F))
       add_piece(std::move(part));
   }

@@ -257,7 +257,8 @@ ChartsResult atlas_of(std::vector<SolvedChart> charts, std::vector<int> guests, 
   size_t cut = 0;  // charts cut where their map was invalid
   for (int round = 0;; ++round) {
     ChartsResult result = lay_out_and_store(charts, guests, flat, unit_V, F, unit, vertex_rows, options);
-    const std::vector<int> invalid = result.error ? std::vector<int>() : invalid_faces(unit_V, F, result.corner_uv);
+    const std::vector<int> invalid =
+        result.error ? std::vector<int>() : without_specks(unit_V, F, result.corner_uv, invalid_faces(unit_V, F, result.corner_uv));
     // Charts to cut in two: pieces far above the bound, and charts whose map folds a face that
     // closes a hole (real faces then overlap near it, none of them flipped).
     std::vector<int> stretched;
@@ -273,8 +274,7 @@ ChartsResult atlas_of(std::vector<SolvedChart> charts, std::vector<int> guests, 
                                " with flipped or zero-area triangles cut smaller and laid out again");
       return result;
     }
-    const bool into_faces = round + 1 == kTuning.most_repair_rounds;
-    cut += size_t(cut_invalid_charts(charts, guests, result.face_chart, invalid, stretched, into_faces, unit_V, F, options, flat));
+    cut += size_t(cut_invalid_charts(charts, guests, result.face_chart, invalid, stretched, unit_V, F, options, flat));
   }
 }
 

@@ -14,7 +14,7 @@ namespace lowstretch {
 ChartsResult failed_result(Error error);
 
 // The charts laid out and measured as the result; the guests go into texels the tiling leaves
-// empty (lay_out). Charts with invalid faces as stored are cut and laid out again
+// empty (lay_out). Charts with invalid faces as stored, specks aside, are cut and laid out again
 // (cut_invalid_charts.h).
 ChartsResult atlas_of(std::vector<SolvedChart> charts, std::vector<int> guests, const Eigen::MatrixXd& unit_V,
                       const Eigen::MatrixXi& F, double unit, int vertex_rows, const ChartOptions& options);
