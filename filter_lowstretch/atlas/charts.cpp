@@ -550,8 +550,15 @@ ChartOptions with_refined_charts(ChartOptions options, Eigen::Index faces) {
 //    their smallest box).
 ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& given) {
   const ChartOptions options = with_refined_charts(given, F.rows());
+  std::vector<StageSeconds> stages;
+  Clock::time_point start = Clock::now();
+  const auto stage_done = [&](const char* stage) {
+    stages.push_back({stage, seconds_since(start)});
+    start = Clock::now();
+  };
   AtlasSearch s(V, F, options);
   if (Error e = start_search(s)) return failed_result(e);
+  stage_done("parts and sharp edges");
   const bool only_sharp_edges = s.made_of_faces && !parts_meet_the_bound(s.unit_V, s.F, s.components, options);
   if (only_sharp_edges)
     if (Error e = cut_along_sharp_edges(s)) return failed_result(e);
@@ -560,10 +567,15 @@ ChartsResult make_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, cons
   const bool above = std::any_of(s.result.charts.begin(), s.result.charts.end(), [](const Chart& c) { return c.above_bound; });
   if (s.made_of_faces && !only_sharp_edges && above)
     if (Error e = cut_along_sharp_edges(s)) return failed_result(e);
+  stage_done("charts cut and laid out");
   fill_empty_texels(s, s.kept, s.result);
+  stage_done("small charts into empty texels");
   merge_for_shorter_seams(s);
+  stage_done("charts merged for shorter seams");
   pack_by_outline_if_better(s, s.kept, s.result);
+  stage_done("charts packed by outline");
   s.result.notes.insert(s.result.notes.begin(), s.notes.begin(), s.notes.end());
+  s.result.stage_seconds = std::move(stages);
   return std::move(s.result);
 }
 
@@ -751,7 +763,14 @@ ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi
   if (result.error) return result;
   double unit = 1;
   const Eigen::MatrixXd unit_V = unit_box_of_used(V, F, unit);
-  return valid_as_stored(unit_V, F, unit, int(V.rows()), options, std::move(result));
+  double in_stages = 0;
+  for (const StageSeconds& stage : result.stage_seconds) in_stages += stage.seconds;
+  result.stage_seconds.insert(result.stage_seconds.begin(), {"input and whole map", std::max(0.0, result.seconds_total - in_stages)});
+  const Clock::time_point start = Clock::now();
+  result = valid_as_stored(unit_V, F, unit, int(V.rows()), options, std::move(result));
+  result.stage_seconds.push_back({"valid as stored", seconds_since(start)});
+  result.seconds_total += result.stage_seconds.back().seconds;
+  return result;
 }
 
 double texture_efficiency(const ChartsResult& r) {

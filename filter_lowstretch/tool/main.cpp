@@ -145,6 +145,9 @@ void print_json(const Arguments& a, const Eigen::MatrixXd& V, const Eigen::Matri
     o["charts"] = charts;
     o["layout_passes"] = passes;
   }
+  nlohmann::ordered_json stages = nlohmann::ordered_json::object();
+  for (const StageSeconds& stage : c.stage_seconds) stages[stage.stage] = stage.seconds;
+  o["stage_seconds"] = stages;
   o["notes"] = c.notes;
   std::cout << o.dump(1) << "\n";
 }

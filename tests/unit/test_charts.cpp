@@ -574,3 +574,23 @@ TEST(Charts, SharedNonDiskMeshes) {
     EXPECT_FALSE(r.input_is_disk);
   }
 }
+
+// stage_seconds splits seconds_total: an atlas's stages in the order they ran, between the input's
+// and the last step's, none negative, adding up to the total.
+TEST(Charts, StageSecondsAddUpToTheTotal) {
+  for (const testmesh::Mesh& m : {testmesh::torus(8, 16), testmesh::hemisphere(6, 12)}) {
+    const ChartsResult r = parameterize_charts(m.V, m.F, ChartOptions());
+    ASSERT_FALSE(r.error);
+    ASSERT_GE(r.stage_seconds.size(), 2u);
+    EXPECT_EQ(r.stage_seconds.front().stage, "input and whole map");
+    EXPECT_EQ(r.stage_seconds.back().stage, "valid as stored");
+    double sum = 0;
+    for (const StageSeconds& s : r.stage_seconds) {
+      EXPECT_GE(s.seconds, 0) << s.stage;
+      sum += s.seconds;
+    }
+    EXPECT_NEAR(sum, r.seconds_total, 1e-9 * r.seconds_total + 1e-12);
+    const bool atlas = r.charts.size() > 1;
+    EXPECT_EQ(r.stage_seconds.size(), atlas ? 7u : 2u) << r.charts.size() << " charts";
+  }
+}

@@ -58,6 +58,12 @@ struct LayoutPass {
   int flipped = 0, degenerate = 0;
 };
 
+// The wall-clock seconds one stage of the atlas took.
+struct StageSeconds {
+  std::string stage;
+  double seconds = 0;
+};
+
 struct ChartsResult {
   Error error;  // error.code != None: nothing below is filled
   // #F x 6: (u, v) of corners 0, 1, 2 of every face, in [g, 1 - g]^2, g = gutter / texture_size,
@@ -76,6 +82,10 @@ struct ChartsResult {
   double seam_length = 0;                 // sum over the charts
   double coverage = 0;                    // fraction of [0,1]^2 covered by the UV triangles
   double seconds_total = 0;
+  // Where seconds_total went, stage by stage in the order they ran: "input and whole map" (the
+  // mesh's shape, its repairs, the whole mesh's map, and any atlas not kept), the kept atlas's
+  // stages, "valid as stored".
+  std::vector<StageSeconds> stage_seconds;
   // A disk input is one chart: parameterize's map of the whole mesh, in the fields above (the
   // faces it folded or collapsed as stored cut out, if any: valid_as_stored.h). How its passes
   // went (empty for charts, whose passes are per chart and summed up in `passes`):
