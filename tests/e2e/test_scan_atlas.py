@@ -7,7 +7,8 @@ file (test_atlas[NAME]; test_fewer_seams_atlas adds --fewer-seams on two defects
 pivoting) `lowstretch FILE -o out.obj --json` must exit 0, write every input face with texture
 coordinates inside the gutter, and leave no flipped UV triangle and no zero-area one on a face with
 3D area (a face of zero 3D area may have zero UV area, never a negative one), as read back from
-the OBJ; TestPointSets: the same on CGAL's real scanner point sets reconstructed by MeshLab
+the OBJ and as MeshLab's ASCII PLY writer would print it (each coordinate, a float, with 6
+decimals); TestPointSets: the same on CGAL's real scanner point sets reconstructed by MeshLab
 (tests/bench/make_point_set_scans.py); the triangle soup of make_defects.py is refused with the weld message
 (TestDefects::test_soup_refused). The closed mesh is CGAL's armadillo (--cgal-meshes), or with
 --scan-size small its Chinese dragon (under half the size) and smaller reconstructions of it
@@ -19,6 +20,7 @@ the OBJ; TestPointSets: the same on CGAL's real scanner point sets reconstructed
 """
 import json
 import os
+import struct
 import subprocess
 import sys
 
@@ -51,6 +53,11 @@ def area3(p, q, r):
 
 def area_uv(a, b, c):
     return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]))
+
+
+def as_ascii_ply(uv):
+    """A texture coordinate as MeshLab's ASCII PLY writer prints it: the float, with printf's %f."""
+    return tuple(float("%f" % struct.unpack("f", struct.pack("f", t))[0]) for t in uv)
 
 
 def make_scans(python, script, mesh, work, *options):
@@ -91,17 +98,20 @@ def check_atlas(tool, path, work, options=()):
         f"{name}: every input face written, as it was ({len(faces)} of {len(in_faces)})"
     assert all(c is not None and GUTTER - 1e-7 <= t <= 1 - GUTTER + 1e-7 for c in corners for t in (c or (0, 0))), \
         f"{name}: every texture coordinate inside the gutter"
-    flipped = zero = flat_negative = 0
+    flipped = zero = flat_negative = ascii_invalid = 0
     for f, uv in zip(faces, corner_uv):
         a = area_uv(*uv)
         if area3(*(in_vertices[v] for v in f)) > 0:  # in the input's own coordinates
             flipped += a < 0
             zero += abs(a) <= ZERO_AREA
+            ascii_invalid += not area_uv(*(as_ascii_ply(t) for t in uv)) > 0
         else:
             flat_negative += a < 0
     assert flipped == 0 and zero == 0 and flat_negative == 0, (
         f"{name}: no flipped UV triangle ({flipped}), no zero-area one on a face with area ({zero}), no flat face "
         f"flipped ({flat_negative})")
+    assert ascii_invalid == 0, \
+        f"{name}: no UV triangle on a face with area flipped or collapsed with 6 decimals, as in ASCII PLY ({ascii_invalid})"
 
 
 class TestDefects:

@@ -44,6 +44,11 @@ Eigen::MatrixXd in_unit_box(const Eigen::MatrixXd& V) {
   return (V.rowwise() - low) / (V.colwise().maxCoeff() - low).maxCoeff();
 }
 
+// The faces invalid in float or with 6 decimals, as valid_as_stored guarantees.
+std::vector<int> invalid_as_written(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& corner_uv) {
+  return invalid_faces(unit_V, F, corner_uv, kTuning.least_uv_area, kTuning.written_uv_rounding);
+}
+
 std::map<int, std::vector<int>> faces_by_chart(const ChartsResult& r) {
   std::map<int, std::vector<int>> faces;
   for (size_t f = 0; f < r.face_chart.size(); ++f) faces[r.face_chart[f]].push_back(int(f));
@@ -67,7 +72,7 @@ TEST(ValidAsStored, TheFuzzedDiskFoldedByHarmonicWeightsComesBackValid) {
     const ChartsResult r = parameterize_charts(m.V, m.F, options);
     ASSERT_FALSE(r.error) << r.error.detail;
     EXPECT_EQ(r.layout.flipped, 0);
-    EXPECT_TRUE(invalid_faces(in_unit_box(m.V), m.F, r.corner_uv).empty());
+    EXPECT_TRUE(invalid_as_written(in_unit_box(m.V), m.F, r.corner_uv).empty());
     expect_valid_layout(m.F, r, &m.V);
   }
 }
@@ -88,7 +93,7 @@ TEST(ValidAsStored, EveryWeightBoundaryAndModeGivesAValidAtlas) {
           ASSERT_FALSE(r.error) << r.error.detail;
           SCOPED_TRACE(testing::Message() << m.F.rows() << " faces, weights " << int(weights) << ", boundary "
                                           << int(boundary) << ", mode " << int(mode));
-          EXPECT_TRUE(invalid_faces(in_unit_box(m.V), m.F, r.corner_uv).empty());
+          EXPECT_TRUE(invalid_as_written(in_unit_box(m.V), m.F, r.corner_uv).empty());
           expect_valid_layout(m.F, r, &m.V);
         }
 }
@@ -119,7 +124,7 @@ TEST(ValidAsStored, AFoldedChartIsMappedAgainAndACollapsedFaceGoesAlone) {
 
   const ChartsResult fixed = valid_as_stored(unit_V, m.F, 1, int(m.V.rows()), options, r);
   ASSERT_FALSE(fixed.error);
-  EXPECT_TRUE(invalid_faces(unit_V, m.F, fixed.corner_uv).empty());
+  EXPECT_TRUE(invalid_as_written(unit_V, m.F, fixed.corner_uv).empty());
   expect_valid_layout(m.F, fixed, &m.V);
   // Faces grouped as before, but for the collapsed face, now alone.
   std::set<std::vector<int>> groups_before, groups_after;
@@ -149,8 +154,9 @@ TEST(ValidAsStored, AValidResultOrAnErrorComesBackAsItWas) {
 }
 
 // A merged scan's specks inside its surface: well-shaped triangles 1e-5 of their faces' size,
-// whose UV area at the texture's density is under the least area. They are told apart from a
-// squashed face; their charts are left whole, and the last step moves each alone.
+// whose UV area at the texture's density is under the least area, in a ring of needles. They are
+// told apart from a squashed face; their charts are left whole, and the last step moves each
+// alone.
 TEST(ValidAsStored, SpecksInsideASurfaceAreMovedAloneAndTheirChartsKept) {
   const testmesh::Mesh base = testmesh::sphere(12, 24);
   const ChartOptions options;
@@ -162,11 +168,20 @@ TEST(ValidAsStored, SpecksInsideASurfaceAreMovedAloneAndTheirChartsKept) {
   const Eigen::MatrixXd unit_V = in_unit_box(m.V);
   const ChartsResult r = parameterize_charts(m.V, m.F, options);
   ASSERT_FALSE(r.error) << r.error.detail;
-  EXPECT_TRUE(invalid_faces(unit_V, m.F, r.corner_uv).empty());
+  EXPECT_TRUE(invalid_as_written(unit_V, m.F, r.corner_uv).empty());
   expect_valid_layout(m.F, r, &m.V);
+  // The specks and the needles around them (whose apexes 6 decimals could swap) go alone; every
+  // other chart is one of the charts the sphere has without them.
+  std::set<int> ring(specks.begin(), specks.end());
+  for (Eigen::Index f = base.F.rows(); f < m.F.rows(); ++f) ring.insert(int(f));
   const std::map<int, std::vector<int>> charts = faces_by_chart(r);
   for (const int f : specks) EXPECT_EQ(charts.at(r.face_chart[size_t(f)]).size(), 1u) << "speck " << f;
-  EXPECT_EQ(r.charts.size(), plain.charts.size() + specks.size());
+  size_t whole = 0;
+  for (const auto& chart : charts) {
+    if (chart.second.size() > 1) ++whole;
+    else EXPECT_EQ(ring.count(chart.second.front()), 1u) << "face " << chart.second.front() << " alone";
+  }
+  EXPECT_EQ(whole, plain.charts.size());
 
   // Before the last step: the specks are invalid, but no face is squashed.
   ChartsResult unrepaired = r;
@@ -183,4 +198,31 @@ TEST(ValidAsStored, SpecksInsideASurfaceAreMovedAloneAndTheirChartsKept) {
   unrepaired.corner_uv.block(squashed, 4, 1, 2) = unrepaired.corner_uv.block(squashed, 0, 1, 2) + Eigen::RowVector2d(0.5e-6, 1e-6);
   EXPECT_EQ(without_specks(unit_V, m.F, unrepaired.corner_uv, invalid_faces(unit_V, m.F, unrepaired.corner_uv)),
             std::vector<int>{squashed});
+}
+
+// MeshLab's ASCII PLY writer prints texture coordinates with 6 decimals. A sliver of area 2e-11
+// (above the least area, valid in float) whose apex is 0.4e-6 off its base collapses so: it is
+// invalid, it goes alone, and then every face keeps a positive area with 6 decimals.
+TEST(ValidAsStored, ASliverThatSixDecimalsCollapseGoesAlone) {
+  const testmesh::Mesh m = testmesh::sphere(12, 24);
+  const ChartOptions options;
+  ChartsResult r = parameterize_charts(m.V, m.F, options);
+  ASSERT_FALSE(r.error);
+  const Eigen::MatrixXd unit_V = in_unit_box(m.V);
+  const int sliver = 0;
+  Eigen::RowVector2d a = r.corner_uv.block(sliver, 0, 1, 2);
+  a = (a * 1e6).array().round() / 1e6;
+  r.corner_uv.row(sliver) << a.x(), a.y(), a.x() + 1e-4, a.y(), a.x() + 5e-5, a.y() + 0.4e-6;
+  ASSERT_GT(signed_area(corner(r, sliver, 0), corner(r, sliver, 1), corner(r, sliver, 2)), kTuning.least_uv_area);
+  EXPECT_TRUE(invalid_faces(unit_V, m.F, r.corner_uv).empty()) << "valid in float";
+  EXPECT_EQ(invalid_as_written(unit_V, m.F, r.corner_uv), std::vector<int>{sliver});
+
+  const ChartsResult fixed = valid_as_stored(unit_V, m.F, 1, int(m.V.rows()), options, r);
+  ASSERT_FALSE(fixed.error);
+  EXPECT_EQ(faces_by_chart(fixed).at(fixed.face_chart[sliver]), std::vector<int>{sliver});
+  const Eigen::MatrixXd written = (fixed.corner_uv * 1e6).array().round() / 1e6;
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f) {
+    const auto at = [&](int k) { return Eigen::Vector2d(written.block(f, 2 * k, 1, 2).transpose()); };
+    EXPECT_GT(signed_area(at(0), at(1), at(2)), 0) << "face " << f;
+  }
 }

@@ -46,6 +46,9 @@ struct AtlasTuning {
   // A UV triangle under this share of the texture is lost to every texture size and to rounding
   // (a 1024^2 texel is 1e-6 of it): a sliver of a reconstruction, mapped to scale.
   double least_uv_area = 1e-11;
+  // MeshLab's ASCII PLY writer (both versions) and 2020.09's OBJ writer print texture coordinates
+  // with 6 decimals: each moves by up to this much.
+  double written_uv_rounding = 0.5e-6;
   // Rounds of cutting the charts with invalid faces and laying out again (what is left goes to
   // valid_as_stored).
   int most_repair_rounds = 3;

@@ -14,10 +14,13 @@
 namespace lowstretch {
 
 // The faces whose UV triangle (corner_uv, as laid out) is flipped or has (next to) zero area,
-// under `least_area` of the texture, though the face is not flat (is_flat_face; unit_V in the unit
-// box), and the flat faces whose UV triangle is flipped (their neighbours overlap there).
+// under `least_area` of the texture or, if `wobble` > 0, flipped or collapsed when each coordinate
+// moves by up to `wobble` (kTuning.written_uv_rounding: as MeshLab's ASCII writers round), though
+// the face is not flat (is_flat_face; unit_V in the unit box), and the flat faces whose UV triangle
+// is flipped (their neighbours overlap there). The charts are cut for the first kind only: a needle
+// that rounding could collapse stays one in any chart, and the last step moves it alone.
 std::vector<int> invalid_faces(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& corner_uv,
-                               double least_area = kTuning.least_uv_area);
+                               double least_area = kTuning.least_uv_area, double wobble = 0);
 
 // `invalid` less its specks: faces so small in 3D (a merged scan's caps) that, mapped as densely
 // as the rest, their UV triangle is under the least area though not flipped. Cutting their charts

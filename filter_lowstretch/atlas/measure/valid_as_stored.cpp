@@ -20,8 +20,9 @@ namespace {
 constexpr double kNeedle = 0.05;
 constexpr int kRounds = 3;
 // The strip takes at most half the texture's height (strip_for): what stays shrinks to a quarter
-// of its area at most, a little more for the gutter store() adds.
+// of its area and half its size at most, a little more for the gutter store() adds.
 constexpr double kSqueezed = 4.5;
+constexpr double kSqueezedSide = 2.1;
 
 // Faces laid out together in one cell of the strip: their corners' UV (#faces x 6) in units of
 // their own.
@@ -227,11 +228,12 @@ ChartsResult valid_as_stored(const Eigen::MatrixXd& unit_V, const Eigen::MatrixX
   if (result.error) return result;
   Moved moved;
   for (int round = 0;; ++round) {
-    if (invalid_faces(unit_V, F, result.corner_uv).empty()) break;
+    if (invalid_faces(unit_V, F, result.corner_uv, kTuning.least_uv_area, kTuning.written_uv_rounding).empty()) break;
     if (round == kRounds) return failed_result({ErrorCode::ChartsNotPacked, int(result.charts.size()), ""});
     // The layout that stays is squeezed below the strip, at most to half its height: the faces
     // that would then fall under the least area (a scan's specks) move too.
-    const std::vector<int> moving = invalid_faces(unit_V, F, result.corner_uv, kSqueezed * kTuning.least_uv_area);
+    const std::vector<int> moving = invalid_faces(unit_V, F, result.corner_uv, kSqueezed * kTuning.least_uv_area,
+                                                  kSqueezedSide * kTuning.written_uv_rounding);
     result = with_invalid_faces_moved(unit_V, F, unit, vertex_rows, options, std::move(result), moving, round == 0, moved);
   }
   const auto count = [](int n, const char* one, const char* many) { return std::to_string(n) + (n == 1 ? one : many); };
