@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "core/half_edges.h"
@@ -32,6 +33,15 @@ bool segments_meet(const Eigen::RowVector2d& a, const Eigen::RowVector2d& b, con
 }  // namespace
 
 bool uv_boundary_crosses_itself(const Eigen::MatrixXi& F, const Eigen::MatrixXd& uv, int most_edges) {
+  // A fan that winds past a full turn at a boundary vertex overlaps itself there, though no two of
+  // its boundary edges cross (the two that overlap share that vertex).
+  std::vector<double> turn(size_t(uv.rows()), 0);
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::RowVector2d p = uv.row(F(f, k)), q = uv.row(F(f, (k + 1) % 3)), r = uv.row(F(f, (k + 2) % 3));
+      turn[size_t(F(f, k))] += std::atan2(std::abs(orient(p, q, r)), (q - p).dot(r - p));
+    }
+  if (std::any_of(turn.begin(), turn.end(), [](double t) { return t > 2 * M_PI + 1e-6; })) return true;
   const std::vector<int> twin = opposite_half_edges(F);
   std::vector<std::array<int, 2>> edges;
   for (int h = 0; h < int(twin.size()); ++h)
