@@ -14,18 +14,13 @@ namespace lowstretch {
 
 namespace {
 
-double stored_area(const Eigen::MatrixXd& corner_uv, Eigen::Index f) {
-  const auto c = [&](int k) { return Eigen::Vector2d(corner_uv.block(f, 2 * k, 1, 2).transpose()); };
-  return signed_uv_area(c(0), c(1), c(2));
-}
-
 // Whether the UV triangle keeps a positive area however each coordinate moves by up to `wobble`:
 // twice its area exceeds the most that moving can take (each corner's move times the opposite
 // side, plus the moves' own cross product).
 bool survives_rounding(const Eigen::MatrixXd& corner_uv, Eigen::Index f, double wobble) {
   const auto c = [&](int k) { return Eigen::Vector2d(corner_uv.block(f, 2 * k, 1, 2).transpose()); };
   const double sides = (c(2) - c(1)).lpNorm<1>() + (c(0) - c(2)).lpNorm<1>() + (c(1) - c(0)).lpNorm<1>();
-  return 2 * signed_uv_area(c(0), c(1), c(2)) > wobble * sides + 8 * wobble * wobble;
+  return 2 * corner_area(corner_uv, f) > wobble * sides + 8 * wobble * wobble;
 }
 
 // The faces of `chart` other than `taken`, in their edge-connected parts.
@@ -45,13 +40,18 @@ std::vector<std::vector<int>> connected_parts(const std::vector<int>& faces, con
 
 }  // namespace
 
+double corner_area(const Eigen::MatrixXd& corner_uv, Eigen::Index f) {
+  const auto c = [&](int k) { return Eigen::Vector2d(corner_uv.block(f, 2 * k, 1, 2).transpose()); };
+  return signed_uv_area(c(0), c(1), c(2));
+}
+
 std::vector<int> invalid_faces(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& corner_uv,
                                double least_area, double wobble) {
   std::vector<int> invalid;
   for (Eigen::Index f = 0; f < F.rows(); ++f)
     // A flat face may map to zero area; folded, its neighbours overlap.
-    if (is_flat_face(unit_V, F, f) ? stored_area(corner_uv, f) < 0
-                                   : !(stored_area(corner_uv, f) > least_area) || (wobble > 0 && !survives_rounding(corner_uv, f, wobble)))
+    if (is_flat_face(unit_V, F, f) ? corner_area(corner_uv, f) < 0
+                                   : !(corner_area(corner_uv, f) > least_area) || (wobble > 0 && !survives_rounding(corner_uv, f, wobble)))
       invalid.push_back(int(f));
   return invalid;
 }
@@ -61,14 +61,15 @@ std::vector<int> without_specks(const Eigen::MatrixXd& unit_V, const Eigen::Matr
   if (invalid.empty()) return invalid;
   double uv_area = 0, area_3d = 0;
   for (Eigen::Index f = 0; f < F.rows(); ++f) {
-    uv_area += std::abs(stored_area(corner_uv, f));
+    uv_area += std::abs(corner_area(corner_uv, f));
     area_3d += face_area_3d(unit_V, F, f);
   }
   const double density = area_3d > 0 ? uv_area / area_3d : 0;
   std::vector<int> kept;
-  for (const int f : invalid)
-    if (!(stored_area(corner_uv, f) > 0 && stored_area(corner_uv, f) >= kTuning.speck_density * density * face_area_3d(unit_V, F, f)))
-      kept.push_back(f);
+  for (const int f : invalid) {
+    const double area = corner_area(corner_uv, f);
+    if (!(area > 0 && area >= kTuning.speck_density * density * face_area_3d(unit_V, F, f))) kept.push_back(f);
+  }
   return kept;
 }
 

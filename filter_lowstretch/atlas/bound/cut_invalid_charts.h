@@ -13,6 +13,9 @@
 
 namespace lowstretch {
 
+// The signed UV area of face f's corners (corner_uv: #F x 6).
+double corner_area(const Eigen::MatrixXd& corner_uv, Eigen::Index f);
+
 // The faces whose UV triangle (corner_uv, as laid out) is flipped or has (next to) zero area,
 // under `least_area` of the texture or, if `wobble` > 0, flipped or collapsed when each coordinate
 // moves by up to `wobble` (kTuning.written_uv_rounding: as MeshLab's ASCII writers round), though

@@ -114,11 +114,6 @@ double length_between_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
   return length;
 }
 
-double corner_area(const Eigen::MatrixXd& corner_uv, Eigen::Index f) {
-  const auto c = [&](int k) { return Eigen::Vector2d(corner_uv.block(f, 2 * k, 1, 2).transpose()); };
-  return signed_uv_area(c(0), c(1), c(2));
-}
-
 ChartsResult failed_result(Error error) {
   ChartsResult result;
   result.error = std::move(error);

@@ -28,9 +28,6 @@ void store(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, int vertex_r
 // 3D length of the edges whose two faces are in different charts (face_chart: each face's).
 double length_between_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const std::vector<int>& face_chart);
 
-// The signed UV area of face f's corners (corner_uv: #F x 6).
-double corner_area(const Eigen::MatrixXd& corner_uv, Eigen::Index f);
-
 // The measures of `from` (stretch, distortions, flips) into `to`, whose pass and timings stay.
 void copy_measures(const PassMetrics& from, PassMetrics& to);
 
