@@ -9,7 +9,8 @@ coordinates inside the gutter, and leave no flipped UV triangle and no zero-area
 3D area (a face of zero 3D area may have zero UV area, never a negative one), as read back from
 the OBJ and as MeshLab's ASCII PLY writer would print it (each coordinate, a float, with 6
 decimals); TestPointSets: the same on CGAL's real scanner point sets reconstructed by MeshLab
-(tests/bench/make_point_set_scans.py); the triangle soup of make_defects.py is refused with the weld message
+(tests/bench/make_point_set_scans.py); TestSimulatedMerges: the same on range scans of the closed
+mesh simulated and merged by MeshLab's VCG merge (tests/bench/simulate_range_scans.py); the triangle soup of make_defects.py is refused with the weld message
 (TestDefects::test_soup_refused). The closed mesh is CGAL's armadillo (--cgal-meshes), or with
 --scan-size small its Chinese dragon (under half the size) and smaller reconstructions of it
 (make_reconstructions.py --small), for the sanitizer build.
@@ -42,6 +43,10 @@ SCAN_SIZES = {"full": ("armadillo.off", []), "small": ("ChineseDragon-10kv.off",
 POINT_SETS = {"full": ["hippo1.ply", "hippo2.ply", "oni.ply", "kitten.xyz"], "small": ["hippo2.ply"]}
 DEFECTS = ["fins", "slivers", "duplicates", "dust", "collapsed", "dropouts", "holes200", "all"]
 RECONSTRUCTIONS = ["ball_pivoting", "vcg", "poisson", "sdf_mc"]
+# A scanning session of the closed mesh simulated and merged by MeshLab's VCG merge
+# (tests/bench/simulate_range_scans.py), by --scan-size: voxel sizes in % of the diagonal, the
+# finer with loose sheets and handles as real merges have.
+SIMULATED_VOXELS = {"full": ["0.66", "0.3"], "small": ["1"]}
 
 
 def area3(p, q, r):
@@ -170,3 +175,20 @@ class TestReconstructions:
         # The largest reconstruction under Fewer seams' face bound (kTuning.most_free_union_faces):
         # its charts are refined and its unions freed at scan size.
         check_atlas(tool, str(scans / "ball_pivoting.off"), str(scans), ["--fewer-seams"])
+
+
+class TestSimulatedMerges:
+    """Range scans of the closed mesh simulated (depth noise, step edges, grazing dropouts, a
+    registration slightly off) and merged as real ones are: caps and needles by the thousand,
+    vertices close but not equal, loose sheets and handles."""
+
+    @pytest.fixture(scope="class")
+    def scans(self, request, tmp_path_factory, closed_mesh):
+        python = pytest_options.required(request.config, "scan_python")
+        voxels = SIMULATED_VOXELS[request.config.getoption("scan_size")]
+        return make_scans(python, "simulate_range_scans.py", closed_mesh, tmp_path_factory.mktemp("simulated"), *voxels)
+
+    def test_atlas(self, request, tool, scans, closed_mesh):
+        name = os.path.splitext(os.path.basename(closed_mesh))[0]
+        for voxel in SIMULATED_VOXELS[request.config.getoption("scan_size")]:
+            check_atlas(tool, str(scans / f"{name}_sim_{voxel}.off"), str(scans))
