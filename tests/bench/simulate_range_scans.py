@@ -16,9 +16,9 @@ off, as a registration leaves it), kept in OUT_FOLDER/NAME_scans.
 
 VOXEL is the merge's voxel size in percent of the mesh's box diagonal: armadillo.off gives 52,932
 faces at 0.66 and 802,500 at 0.17 (4 s and 21 s on 2 cores); bun_zipper.ply 52,991 at 0.75.
-Nothing random: seeded, the same files every run. Needs numpy and pymeshlab 2025.7.post1
-(the Python of tests/bench/make_reconstructions.py, ~/.cache/filter_lowstretch/scan-venv); the merge writes scratch files in the
-working folder, so it runs in a temporary one.
+Nothing random: seeded, the same files every run. Needs numpy and pymeshlab 2025.7.post1 (the
+Python of tests/bench/make_reconstructions.py, ~/.cache/filter_lowstretch/scan-venv); the merge
+writes scratch files in the working folder, so it runs in a temporary one.
 
 usage: simulate_range_scans.py MESH OUT_FOLDER VOXEL... [--views N] [--pixels P] [--seed S]
   N: range maps (default 12), P: pixels a side (default 450), S: seed (default 1)
