@@ -301,7 +301,8 @@ ChartsResult packed_whole(const AtlasSearch& s, std::vector<SolvedChart> charts)
 // The charts packed by their outlines instead of tiled (pack_by_outline), each on its own
 // rectangle or free; also with the flat ones as seen along their normal, if any is: the better
 // of the two, or an error.
-ChartsResult packed_by_outline(const AtlasSearch& s, const std::vector<SolvedChart>& charts) {
+ChartsResult packed_by_outline(const AtlasSearch& s, std::vector<SolvedChart> charts) {
+  map_all_at_own_shape(charts, s.options);  // once for both packings
   std::vector<SolvedChart> flat_seen = charts;
   see_flat_charts_along_normal(flat_seen);
   const auto free_charts = [](const std::vector<SolvedChart>& c) {
@@ -341,6 +342,7 @@ ChartsResult AtlasSearch::tile(std::vector<SolvedChart> charts) {
 void pack_by_outline_if_better(const AtlasSearch& s, const std::vector<SolvedChart>& kept, ChartsResult& laid_out) {
   if (kept.empty() || laid_out.error) return;
   std::vector<SolvedChart> turned = kept;
+  map_all_at_own_shape(turned, s.options);  // turned as mapped, and mapped once for every packing
   turn_free_charts_to_smallest_box(turned);
   ChartsResult packed = packed_by_outline(s, turned);
   std::vector<SolvedChart> freed = std::move(turned);

@@ -35,6 +35,11 @@ struct AtlasTuning {
   // And only a body, a part that kept two thirds of the faces of the chart it was cut from: parts
   // cut nearer the middle may meet the bound, and cutting them unmapped makes a worse atlas.
   double least_body_share = 0.67;
+  // Charts larger than this are cut without a deciding map: a scan's body of hundreds of thousands
+  // of faces stretches far above any bound, and its map (multigrid that does not converge, then
+  // the sparse LU) would take most of the time only to say so. Its leaves map it after all where
+  // they cost more than the bound (the check of cuts ahead).
+  int most_faces_to_decide = 50000;
   // Multigrid iterations for a deciding map before the sparse LU takes over: on a large body that
   // does not converge, every further iteration is time lost before the LU.
   int deciding_iterations = 20;

@@ -86,7 +86,10 @@ int cut_invalid_charts(std::vector<SolvedChart>& charts, std::vector<int>& guest
   const int invalid_charts = int(std::count(cut.begin(), cut.end(), 1));
   for (const int c : stretched) split[size_t(c)] = cut[size_t(c)] = !cut[size_t(c)];
   const std::vector<int> twin = stretched.empty() ? std::vector<int>() : opposite_half_edges(F);
+  std::vector<char> is_guest(charts.size(), 0);
+  for (const int g : guests) is_guest[size_t(g)] = 1;
   guests.erase(std::remove_if(guests.begin(), guests.end(), [&](int g) { return cut[size_t(g)] != 0; }), guests.end());
+  std::vector<char> piece_is_guest;  // per piece
   std::vector<int> local_of(size_t(unit_V.rows()), -1);
   std::vector<SolvedChart> pieces;
   const auto add_piece = [&](std::vector<int> faces) {
@@ -109,6 +112,7 @@ int cut_invalid_charts(std::vector<SolvedChart>& charts, std::vector<int>& guest
       if (taken[size_t(f)]) add_piece({f});
     for (std::vector<int>& part : split[c] ? split_chart(unit_V, F, twin, charts[c].faces) : connected_parts(charts[c].faces, taken, F))
       add_piece(std::move(part));
+    piece_is_guest.resize(pieces.size(), is_guest[c]);
   }
   for (SolvedChart& piece : pieces) {
     solve_chart(piece, options.disk, 0);  // may replace the chart by its square map: marked after
@@ -123,7 +127,10 @@ int cut_invalid_charts(std::vector<SolvedChart>& charts, std::vector<int>& guest
       kept.push_back(std::move(charts[c]));
     }
   for (int& g : guests) g = new_index[size_t(g)];
-  for (SolvedChart& piece : pieces) kept.push_back(std::move(piece));
+  for (size_t p = 0; p < pieces.size(); ++p) {
+    if (piece_is_guest[p]) guests.push_back(int(kept.size()));
+    kept.push_back(std::move(pieces[p]));
+  }
   charts = std::move(kept);
   return invalid_charts;
 }

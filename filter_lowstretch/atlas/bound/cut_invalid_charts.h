@@ -33,8 +33,9 @@ std::vector<int> without_specks(const Eigen::MatrixXd& unit_V, const Eigen::Matr
 
 // Cuts the charts (face_chart: the chart of each face) that hold `invalid` faces, each into its
 // invalid faces one by one and the connected parts of the rest, and the `stretched` charts (such
-// pieces far above the bound) in two where the stretch splits charts. Maps the new charts. A cut
-// chart is no longer a guest. A flat face left alone has nothing to map: it goes to `flat`.
+// pieces far above the bound) in two where the stretch splits charts. Maps the new charts. The
+// pieces of a guest are guests (a layout by outline stays one). A flat face left alone has
+// nothing to map: it goes to `flat`.
 // Returns how many charts held invalid faces.
 int cut_invalid_charts(std::vector<SolvedChart>& charts, std::vector<int>& guests, const std::vector<int>& face_chart,
                         const std::vector<int>& invalid, const std::vector<int>& stretched,

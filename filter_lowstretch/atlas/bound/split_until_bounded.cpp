@@ -197,6 +197,27 @@ std::vector<Cut> cut_on_both_cores(Splitting& s, const std::vector<int>& to_cut)
   return cuts;
 }
 
+// The charts of nodes [first, end) too large to map while deciding (kTuning.most_faces_to_decide):
+// marked as cut ahead (no map), to be cut as they are.
+std::vector<int> cut_without_map(Splitting& s, size_t first, size_t end) {
+  std::vector<int> unmapped;
+  for (size_t i = first; i < end; ++i) {
+    SolvedChart& chart = s.tree.nodes[i];
+    if (chart.cut_ahead || int(chart.faces.size()) <= kTuning.most_faces_to_decide) continue;
+    chart.cut_ahead = true;
+    unmapped.push_back(int(i));
+  }
+  return unmapped;
+}
+
+// A chart cut without a map that was left whole after all (no cut into disks, or the chart
+// limit) is mapped.
+void map_if_left_whole(Splitting& s, const Options& deciding, SolvedChart& chart, const std::vector<int>& parts) {
+  if (!parts.empty()) return;
+  chart.cut_ahead = false;
+  map_to_decide(chart, deciding, s.options.max_stretch);
+}
+
 // The pieces of the cuts into the tree, in order, within the chart limit.
 void add_pieces(Splitting& s, const std::vector<int>& to_cut, std::vector<Cut>& cuts) {
   for (size_t k = 0; k < to_cut.size(); ++k) {
@@ -222,8 +243,13 @@ void add_pieces(Splitting& s, const std::vector<int>& to_cut, std::vector<Cut>& 
 
 // The leaves of the tree, depth first, parts in order; and the roots whole if any was cut.
 void collect_charts(ChartTree& tree, size_t roots, std::vector<SolvedChart>& leaves, std::vector<SolvedChart>& uncut) {
-  bool cut = false;
-  for (size_t root = 0; root < roots; ++root) cut = cut || !tree.parts[root].empty();
+  // One chart per part is a candidate only where every part has a map.
+  bool cut = false, all_mapped = true;
+  for (size_t root = 0; root < roots; ++root) {
+    cut = cut || !tree.parts[root].empty();
+    all_mapped = all_mapped && !tree.nodes[root].cut_ahead;
+  }
+  cut = cut && all_mapped;
   for (size_t root = 0; root < roots && cut; ++root) {
     uncut.push_back(tree.nodes[root]);
     if (!tree.parts[root].empty()) uncut.back().kept_whole = "one chart per part stretched less";
@@ -274,6 +300,7 @@ Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
   const Options deciding = deciding_options(options.disk);
   // Round after round: the new charts mapped on both cores, then those the bound cuts cut.
   for (size_t first = 0, end = s.tree.nodes.size(); first < end; first = end, end = s.tree.nodes.size()) {
+    const std::vector<int> unmapped = cut_without_map(s, first, end);
     const size_t round_faces = faces_in(s.tree.nodes, first, end);
     for_each_index(int(end - first), [&](int i, int) {
       SolvedChart& chart = s.tree.nodes[first + size_t(i)];
@@ -281,8 +308,10 @@ Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
     }, largest_first(s.tree.nodes, first, end));
     std::vector<int> to_cut;
     if (Error e = charts_to_cut(s, first, end, to_cut)) return e;
+    to_cut.insert(to_cut.end(), unmapped.begin(), unmapped.end());
     std::vector<Cut> cuts = cut_on_both_cores(s, to_cut);
     add_pieces(s, to_cut, cuts);
+    for (const int i : unmapped) map_if_left_whole(s, deciding, s.tree.nodes[size_t(i)], s.tree.parts[size_t(i)]);
     if (options.disk.progress && !options.disk.progress(0.9 * (1 - std::pow(0.5, double(end))), "charts"))
       return {ErrorCode::Cancelled, 0, ""};
   }

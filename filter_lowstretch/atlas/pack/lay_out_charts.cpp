@@ -32,6 +32,13 @@ void map_at_own_shape(SolvedChart& chart, const Options& options) {
   else if (chart.deciding_map) solve_chart(chart, options, chart.aspect());
 }
 
+void map_all_at_own_shape(std::vector<SolvedChart>& charts, const ChartOptions& options) {
+  const size_t faces = faces_in(charts, 0, charts.size());
+  for_each_index(int(charts.size()), [&](int i, int) {
+    map_at_own_shape(charts[size_t(i)], for_share(options.disk, charts[size_t(i)].faces.size(), faces));
+  }, largest_first(charts, 0, charts.size()));
+}
+
 std::vector<double> cell_areas(const std::vector<SolvedChart>& charts) {
   // A chart that does not fill its box (a free chart, a rectangle with closed holes) gets a cell
   // that holds its box at the texel density of the others.
