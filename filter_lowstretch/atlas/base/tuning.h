@@ -39,7 +39,7 @@ struct AtlasTuning {
   // of faces stretches far above any bound, and its map (multigrid that does not converge, then
   // the sparse LU) would take most of the time only to say so. Its leaves map it after all where
   // they cost more than the bound (the check of cuts ahead).
-  int most_faces_to_decide = 50000;
+  int most_faces_to_decide = 20000;
   // Multigrid iterations for a deciding map before the sparse LU takes over: on a large body that
   // does not converge, every further iteration is time lost before the LU.
   int deciding_iterations = 20;
