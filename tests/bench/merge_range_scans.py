@@ -70,6 +70,20 @@ def diagonal(scans):
     return float(np.linalg.norm(V.max(0) - V.min(0)))
 
 
+def write_merges(scans, voxels, diagonal, out, stem):
+    """OUT/STEM_VOXEL.off for each voxel size (in % of `diagonal`): the scans merged, in a scratch
+    folder (the merge writes files in the working folder)."""
+    here = os.getcwd()
+    with tempfile.TemporaryDirectory() as scratch:
+        os.chdir(scratch)
+        for voxel in voxels:
+            V, F = vcg_merge(scans, voxel / 100 * diagonal)
+            path = os.path.join(out, f"{stem}_{voxel:g}.off")
+            write_off(path, V, F)
+            print(f"{os.path.basename(path)}: {len(V)} vertices, {len(F)} faces")
+        os.chdir(here)
+
+
 def main():
     if len(sys.argv) < 5:
         sys.exit(__doc__)
@@ -80,15 +94,7 @@ def main():
         sys.exit(f"{conf}: no bmesh line")
     name = os.path.splitext(os.path.basename(conf))[0]
     os.makedirs(out, exist_ok=True)
-    here = os.getcwd()
-    with tempfile.TemporaryDirectory() as scratch:
-        os.chdir(scratch)
-        for voxel in voxels:
-            V, F = vcg_merge(scans, voxel / 100 * diagonal(scans))
-            path = os.path.join(out, f"{name}_vcg_{voxel:g}.off")
-            write_off(path, V, F)
-            print(f"{os.path.basename(path)}: {len(V)} vertices, {len(F)} faces")
-        os.chdir(here)
+    write_merges(scans, voxels, diagonal(scans), out, f"{name}_vcg")
 
 
 if __name__ == "__main__":

@@ -25,13 +25,11 @@ usage: simulate_range_scans.py MESH OUT_FOLDER VOXEL... [--views N] [--pixels P]
 """
 import argparse
 import os
-import tempfile
 
 import numpy as np
 import pymeshlab
 
-from make_point_set_scans import quietly, write_off
-from merge_range_scans import placed_scans, rotation, vcg_merge
+from merge_range_scans import placed_scans, rotation, write_merges
 
 # Fitted to the bunny's scans (roughness, long triangles, holes) and merges (parts, handles):
 NOISE = 0.12  # depth noise, standard deviation in grid steps
@@ -160,15 +158,7 @@ def main():
                 args.views, args.pixels, args.seed)
     scans = placed_scans(folder, conf)
     diagonal = np.linalg.norm(np.ptp(ms.current_mesh().vertex_matrix(), axis=0))
-    here = os.getcwd()
-    with tempfile.TemporaryDirectory() as scratch:
-        os.chdir(scratch)
-        for voxel in args.voxels:
-            V, F = vcg_merge(scans, voxel / 100 * diagonal)
-            path = os.path.join(out, f"{name}_sim_{voxel:g}.off")
-            write_off(path, V, F)
-            print(f"{os.path.basename(path)}: {len(V)} vertices, {len(F)} faces")
-        os.chdir(here)
+    write_merges(scans, args.voxels, diagonal, out, f"{name}_sim")
 
 
 if __name__ == "__main__":

@@ -10,10 +10,11 @@ coordinates inside the gutter, and leave no flipped UV triangle and no zero-area
 the OBJ and as MeshLab's ASCII PLY writer would print it (each coordinate, a float, with 6
 decimals); TestPointSets: the same on CGAL's real scanner point sets reconstructed by MeshLab
 (tests/bench/make_point_set_scans.py); TestSimulatedMerges: the same on range scans of the closed
-mesh simulated and merged by MeshLab's VCG merge (tests/bench/simulate_range_scans.py); the triangle soup of make_defects.py is refused with the weld message
-(TestDefects::test_soup_refused). The closed mesh is CGAL's armadillo (--cgal-meshes), or with
---scan-size small its Chinese dragon (under half the size) and smaller reconstructions of it
-(make_reconstructions.py --small), for the sanitizer build.
+mesh simulated and merged by MeshLab's VCG merge (tests/bench/simulate_range_scans.py); the
+triangle soup of make_defects.py is refused with the weld message (TestDefects::test_soup_refused).
+The closed mesh is CGAL's armadillo (--cgal-meshes), or with --scan-size small its Chinese dragon
+(under half the size) and smaller reconstructions of it (make_reconstructions.py --small), for the
+sanitizer build.
 
   python3 -B -m pytest -p no:cacheprovider tests/e2e/test_scan_atlas.py::TestDefects --tool build/lowstretch
   python3 -B -m pytest -p no:cacheprovider tests/e2e/test_scan_atlas.py::TestReconstructions \
