@@ -5,8 +5,10 @@
 //   chart_map/ mapping one chart with the paper's method onto a rectangle (or free);
 //   bound/     cutting the charts that stretch more than the bound, or whose map is invalid;
 //   pack/      the rectangles tiling the texture, small charts in the texels left empty;
-//   measure/   the layout stored and measured as MeshLab holds it.
-// This file chooses among the candidate atlases (charts.cpp) and is the entry point.
+//   measure/   the layout stored and measured as MeshLab holds it;
+//   search/    the candidate atlases, each cut, mapped, laid out and measured, the best kept.
+// This file is the entry point: it prepares the input (a disk's own map, welded duplicates, a
+// manifold copy, parts of zero area left out; charts.cpp) and hands the rest to search/.
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -24,12 +26,6 @@ namespace lowstretch {
 // makes charts and the only problems are several components, holes, no boundary or genus;
 // non-manifold or non-orientable input stays an error.
 ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options);
-
-// Texture efficiency (Sander et al. 2001): coverage / L2^2, the share of the texture used per unit
-// of stretch; -1 for a failed result.
-double texture_efficiency(const ChartsResult& result);
-// The highest L2 stretch of any one chart (0 for a failed result).
-double largest_chart_stretch(const ChartsResult& result);
 
 // Whether making charts gets past this error of the disk check (a cut into disks or a manifold copy
 // fixes it): the caller then adds how its user asks for charts.

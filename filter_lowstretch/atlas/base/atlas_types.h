@@ -2,6 +2,7 @@
 // not a disk, the options, and the result (every chart, every pass over all charts, the layout).
 #pragma once
 #include <Eigen/Core>
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -97,5 +98,14 @@ struct ChartsResult {
 };
 
 const char* to_string(NonDisk non_disk);
+
+// Texture efficiency (Sander et al. 2001): coverage / L2^2, the share of the texture used per unit
+// of stretch; -1 for a failed result.
+double texture_efficiency(const ChartsResult& result);
+// The highest L2 stretch of any one chart (0 for a failed result).
+double largest_chart_stretch(const ChartsResult& result);
+
+using Clock = std::chrono::steady_clock;
+inline double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 }  // namespace lowstretch

@@ -134,7 +134,7 @@ struct AtlasTuning {
   int packing_bisections = 6;
   int most_packing_halvings = 12;
 
-  // --- Merging charts for shorter seams (bound/merge_neighbours, charts.cpp) ---
+  // --- Merging charts for shorter seams (bound/merge_neighbours, search/merge_for_seams) ---
   // How far the charts' texture cost grows, step by step, as they are merged: each step is laid out
   // and measured. The first step that falls below the least efficiency is halved this many times
   // (a merge of two large charts can cost much more than the step's growth).
@@ -174,7 +174,7 @@ struct AtlasTuning {
   // time would make, in less time.
   int merges_mapped_together = 8;
 
-  // --- Choosing among atlases (charts.cpp) ---
+  // --- Choosing among atlases (search/) ---
   // An atlas this much more efficient than one chart per part could be skips laying that out.
   double clearly_better = 1.25;
 };

@@ -2,197 +2,18 @@
 
 #include <algorithm>
 #include <array>
-#include <cassert>
-#include <cstdint>
-#include <cstring>
 #include <cmath>
-#include <limits>
 #include <numeric>
 
 #include "atlas/base/tuning.h"
 #include "atlas/chart_map/chart_threads.h"
+#include "atlas/pack/chart_outlines.h"
+#include "atlas/pack/texel_grid.h"
 #include "core/stretch.h"
 
 namespace lowstretch {
 
 namespace {
-
-// Which cells of a square grid are taken (a chart, or within the gutter of one), and for each
-// cell how many free cells follow it in its row: a box fits where every row it spans has room.
-class TexelGrid {
- public:
-  explicit TexelGrid(int side)
-      : side_(side), taken_(size_t(side) * size_t(side), 0), run_(taken_.size(), 0), widest_(size_t(side), 0) {
-    assert(side <= std::numeric_limits<Run>::max());
-  }
-  int side() const { return side_; }
-  void take(int x0, int y0, int x1, int y1) {  // cells [x0, x1) x [y0, y1), clipped
-    x0 = std::max(x0, 0), y0 = std::max(y0, 0), x1 = std::min(x1, side_), y1 = std::min(y1, side_);
-    for (int y = y0; y < y1 && x0 < x1; ++y) std::fill(taken_.begin() + long(index(x0, y)), taken_.begin() + long(index(x1, y)), 1);
-  }
-  // Takes every cell within `by` cells of a taken one (a square around each): each row ORed with
-  // its neighbours `by` cells either way, then with the rows `by` above and below (whole rows at
-  // a time, which the compiler vectorizes; a column at a time strides through memory).
-  void grow(int by) {
-    const size_t n = size_t(side_);
-    std::vector<char> row(n);
-    for (size_t y = 0; y < n; ++y) {
-      char* __restrict cells = taken_.data() + y * n;
-      const char* __restrict before = row.data();
-      std::copy(cells, cells + n, row.begin());
-      for (size_t shift = 1; shift <= size_t(by) && shift < n; ++shift) {
-        for (size_t x = 0; x + shift < n; ++x) cells[x] |= before[x + shift];
-        for (size_t x = shift; x < n; ++x) cells[x] |= before[x - shift];
-      }
-    }
-    std::vector<char> grown(taken_.size());
-    for (size_t y = 0; y < n; ++y) {
-      char* out = grown.data() + y * n;
-      const size_t first = y >= size_t(by) ? y - size_t(by) : 0, last = std::min(n - 1, y + size_t(by));
-      std::copy(taken_.data() + first * n, taken_.data() + (first + 1) * n, out);
-      for (size_t near = first + 1; near <= last; ++near) {
-        const char* cells = taken_.data() + near * n;
-        for (size_t x = 0; x < n; ++x) out[x] |= cells[x];
-      }
-    }
-    taken_.swap(grown);
-  }
-  // Free cells: how many free cells start there; taken ones: minus how many taken cells do, so
-  // that a search skips a taken stretch at once.
-  void count_runs(int y0, int y1) { count_runs(y0, y1, 0, side_); }
-  // The same where only cells of columns [x0, x1) changed: a cell's count follows from its own
-  // and the next one's, so the counts right of x1 stay, and left of x0 they stay from the first
-  // that comes out as before.
-  void count_runs(int y0, int y1, int x0, int x1) {
-    x0 = std::max(x0, 0), x1 = std::min(x1, side_);
-    for (int y = std::max(y0, 0); y < std::min(y1, side_); ++y) {
-      const char* cells = taken_.data() + index(0, y);
-      Run* runs = run_.data() + index(0, y);
-      const int next = x1 < side_ ? runs[x1] : 0;
-      int free = std::max(next, 0), taken = std::max(-next, 0);
-      for (int x = x1; x-- > 0;) {
-        const bool is_taken = cells[x] != 0;
-        free = is_taken ? 0 : free + 1;
-        taken = is_taken ? taken + 1 : 0;
-        const Run run = Run(is_taken ? -taken : free);
-        if (x < x0 && runs[x] == run) break;
-        runs[x] = run;
-      }
-      widest_[size_t(y)] = std::max<int>(0, *std::max_element(runs, runs + side_));
-    }
-  }
-  // The first place (lowest row, then column; rows up to last_y) where an outline's cells are all
-  // free; false if none. rows[r]: the outline's runs of cells [begin, end) in its row r.
-  bool first_fit(const std::vector<std::vector<std::pair<int, int>>>& rows, int last_y, int& at_x, int& at_y) const {
-    const int height = int(rows.size());
-    int width = 0;
-    std::vector<int> widest_run(rows.size(), 0), order;  // rows with runs, widest run first: they fail soonest
-    for (int r = 0; r < height; ++r) {
-      for (const auto& run : rows[size_t(r)]) {
-        width = std::max(width, run.second);
-        widest_run[size_t(r)] = std::max(widest_run[size_t(r)], run.second - run.first);
-      }
-      if (widest_run[size_t(r)] > 0) order.push_back(r);
-    }
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return widest_run[size_t(a)] > widest_run[size_t(b)]; });
-    for (int y = 0; y + height <= side_ && y <= last_y; ++y) {
-      // Rows whose widest free stretch is too narrow rule out this y at once (most rows of a tiling).
-      if (std::any_of(order.begin(), order.end(), [&](int r) { return widest_[size_t(y + r)] < widest_run[size_t(r)]; })) continue;
-      for (int x = 0; x + width <= side_;) {
-        int skip = 0;
-        for (const int r : order) {
-          for (const auto& run : rows[size_t(r)]) {
-            const int free = run_[index(x + run.first, y + r)];
-            if (free >= run.second - run.first) continue;
-            skip = free < 0 ? -free : free + 1;  // past the taken cells, or past the one that ends the free ones
-            break;
-          }
-          if (skip) break;
-        }
-        if (skip == 0) {
-          at_x = x, at_y = y;
-          return true;
-        }
-        x += skip;
-      }
-    }
-    return false;
-  }
-
- private:
-  size_t index(int x, int y) const { return size_t(y) * size_t(side_) + size_t(x); }
-  using Run = int16_t;  // a grid side is at most kTuning.most_grid_side: half the memory of int
-  int side_;
-  std::vector<char> taken_;
-  std::vector<Run> run_;
-  std::vector<int> widest_;  // per row: its longest stretch of free cells
-};
-
-// The cells that the triangle touches, as take(y, x0, x1) for each row y in [0, rows) it meets:
-// the cells [x0, x1) under the x-extent of the triangle's part in that row (a convex piece, so
-// every cell under its extent meets it).
-template <class Take>
-void for_each_touched_row(const Eigen::Vector2d p[3], int rows, Take take) {
-  const double low = std::min({p[0].y(), p[1].y(), p[2].y()}), high = std::max({p[0].y(), p[1].y(), p[2].y()});
-  for (int y = std::max(int(std::floor(low)), 0); y <= std::min(int(std::floor(high)), rows - 1); ++y) {
-    const double y0 = std::max(double(y), low), y1 = std::min(double(y + 1), high);
-    double x0 = std::numeric_limits<double>::infinity(), x1 = -x0;
-    for (int k = 0; k < 3; ++k) {
-      const Eigen::Vector2d& a = p[k];
-      const Eigen::Vector2d& b = p[(k + 1) % 3];
-      if (a.y() >= y0 && a.y() <= y1) x0 = std::min(x0, a.x()), x1 = std::max(x1, a.x());
-      for (const double line : {y0, y1})
-        if ((a.y() - line) * (b.y() - line) < 0) {
-          const double x = a.x() + (b.x() - a.x()) * (line - a.y()) / (b.y() - a.y());
-          x0 = std::min(x0, x), x1 = std::max(x1, x);
-        }
-    }
-    if (x0 <= x1) take(y, int(std::floor(x0)), int(std::floor(x1)) + 1);
-  }
-}
-
-void take_triangle(TexelGrid& grid, const Eigen::Vector2d p[3]) {
-  for_each_touched_row(p, grid.side(), [&grid](int y, int x0, int x1) { grid.take(x0, y, x1, y + 1); });
-}
-
-// A guest at one quarter turn and texel density: its corners in cells from its box's corner
-// (3 per real face), and the cells its triangles touch as runs per row.
-struct Outline {
-  std::vector<Eigen::Vector2d> corners;
-  std::vector<std::vector<std::pair<int, int>>> rows;
-};
-
-Outline outline_of(const SolvedChart& chart, const Eigen::Vector2d& size, int turns) {
-  const Eigen::Vector2d cells = turns % 2 ? Eigen::Vector2d(size.y(), size.x()) : size;
-  Outline outline;
-  outline.corners.reserve(3 * chart.faces.size());
-  for (size_t j = 0; j < chart.faces.size(); ++j)
-    for (int k = 0; k < 3; ++k) {
-      Eigen::Vector2d q = ((chart.map.uv.row(chart.mesh.F(Eigen::Index(j), k)).transpose() - chart.box.min()).array() /
-                           chart.box.sizes().array()).matrix();
-      for (int t = 0; t < turns; ++t) q = Eigen::Vector2d(1 - q.y(), q.x());  // quarter turns counter-clockwise, as the tiling's
-      outline.corners.push_back(q.cwiseProduct(cells));
-    }
-  const int w = int(std::floor(cells.x())) + 1, h = int(std::floor(cells.y())) + 1;
-  std::vector<char> taken(size_t(w) * size_t(h), 0);  // w x h, row after row
-  for (size_t j = 0; j < chart.faces.size(); ++j)
-    for_each_touched_row(&outline.corners[3 * j], h, [&](int y, int x0, int x1) {
-      x0 = std::max(x0, 0), x1 = std::min(x1, w);
-      if (x0 < x1) std::fill(taken.begin() + long(y) * w + x0, taken.begin() + long(y) * w + x1, 1);
-    });
-  outline.rows.resize(size_t(h));
-  for (int y = 0; y < h; ++y) {
-    const char* row = taken.data() + size_t(y) * size_t(w);
-    for (const char* at = row; (at = static_cast<const char*>(std::memchr(at, 1, size_t(row + w - at)))) != nullptr;) {
-      const char* end = static_cast<const char*>(std::memchr(at, 0, size_t(row + w - at)));
-      if (!end) end = row + w;
-      outline.rows[size_t(y)].push_back({int(at - row), int(end - row)});
-      if (end == row + w) break;
-      at = end;
-    }
-  }
-  return outline;
-}
 
 // The cell area that charts not filling their box are expected to leave empty.
 double expected_empty_area(const std::vector<SolvedChart>& charts, const std::vector<double>& own_area) {
@@ -254,53 +75,6 @@ double take_tiled_charts(const std::vector<SolvedChart>& charts, const std::vect
 // Which turning of a chart is placed: the one whose lowest free place has the lowest bottom, or
 // the lowest top (then the leftmost).
 enum class Lowest { Bottom, Top };
-
-// The charts' outlines at one texel density, each turning drawn when first asked for, or all
-// at once (draw_all): every try of a density places the same charts, turned either way (Lowest).
-class Outlines {
- public:
-  // density: grid cells^2 per unit of 3D area; side: the grid's cells a side.
-  Outlines(const std::vector<SolvedChart>& charts, double density, int side)
-      : charts_(charts),
-        size_(charts.size(), Eigen::Vector2d::Zero()),
-        turnings_(charts.size(), 4),
-        drawn_(charts.size()),
-        is_drawn_(charts.size()) {
-    for (size_t c = 0; c < charts.size(); ++c) {
-      // A box looks the same half a turn round; an outline may fit into other room. (Once here:
-      // fill() sums the chart's UV area, and every try asks for each chart's turnings.)
-      if (charts[c].fill() >= kTuning.least_guest_fill) turnings_[c] = 2;
-      const double own = charts[c].uv_area();
-      if (density > 0 && own > 0 && charts[c].box.sizes().minCoeff() > 0)
-        size_[c] = charts[c].box.sizes() * std::sqrt(density * charts[c].kept.area_3d / own);
-      // A sliver longer than the texture (or a degenerate map) has no room.
-      if (!(size_[c].minCoeff() > 0 && size_[c].maxCoeff() <= side)) size_[c].setZero();
-    }
-  }
-  // Whether chart c could fit on the grid at all (its outline is drawn only then).
-  bool has_room(int c) const { return size_[size_t(c)].minCoeff() > 0; }
-  int turnings(int c) const { return turnings_[size_t(c)]; }
-  // Every turning of every chart with room, on both cores: then `at` only reads, from any thread.
-  void draw_all() {
-    for_each_index(int(charts_.size()), [this](int c, int) {
-      for (int turns = 0; has_room(c) && turns < turnings(c); ++turns) at(c, turns);
-    });
-  }
-  const Outline& at(int c, int turns) {
-    if (!is_drawn_[size_t(c)][size_t(turns)]) {
-      drawn_[size_t(c)][size_t(turns)] = outline_of(charts_[size_t(c)], size_[size_t(c)], turns);
-      is_drawn_[size_t(c)][size_t(turns)] = true;
-    }
-    return drawn_[size_t(c)][size_t(turns)];
-  }
-
- private:
-  const std::vector<SolvedChart>& charts_;
-  std::vector<Eigen::Vector2d> size_;
-  std::vector<int> turnings_;
-  std::vector<std::array<Outline, 4>> drawn_;
-  std::vector<std::array<bool, 4>> is_drawn_;
-};
 
 // The free place of chart c's outline over its turnings: the lowest (`lowest`), then the leftmost.
 const Outline* find_place(const TexelGrid& grid, int c, Outlines& outlines, int side, Lowest lowest,

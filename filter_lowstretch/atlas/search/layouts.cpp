@@ -1,0 +1,127 @@
+// The layouts a candidate atlas gets: tiled (falling back to packing by outline when the cells
+// cannot hold its charts), small charts in the texels left empty, every chart packed by outline.
+#include <algorithm>
+#include <array>
+#include <numeric>
+#include <string>
+#include <type_traits>
+#include <utility>
+
+#include "atlas/chart_map/chart_threads.h"
+#include "atlas/chart_map/free_charts.h"
+#include "atlas/measure/atlas_result.h"
+#include "atlas/pack/empty_texels.h"
+#include "atlas/pack/lay_out_charts.h"
+#include "atlas/search/atlas_search.h"
+
+namespace lowstretch {
+
+double mean_l2_squared(const std::vector<SolvedChart>& charts) {
+  double weighted = 0, area = 0;
+  for (const SolvedChart& c : charts) {
+    weighted += c.kept.area_3d * c.kept.l2_stretch * c.kept.l2_stretch;
+    area += c.kept.area_3d;
+  }
+  return area > 0 ? weighted / area : 0;
+}
+
+void fill_empty_texels(const AtlasSearch& s, const std::vector<SolvedChart>& kept, ChartsResult& tiled) {
+  if (kept.empty() || !(tiled.coverage < 1 - kTuning.least_empty_share) ||
+      expected_empty_share(kept, cell_areas(kept)) < kTuning.least_empty_share)
+    return;
+  const double tiled_efficiency = texture_efficiency(tiled);
+  std::vector<SolvedChart> flat_seen = kept;
+  see_flat_charts_along_normal(flat_seen);
+  // Each choice laid out on its own (on both cores), then taken in order where it does better.
+  constexpr size_t choices = std::extent<decltype(kGuestChoices)>::value;
+  std::array<ChartsResult, choices> nested;
+  std::array<bool, choices> tried{};
+  for_each_index(int(choices), [&](int i, int) {
+    const GuestChoice& choice = kGuestChoices[i];
+    const std::vector<SolvedChart>& charts = choice.flat_seen_along_normal ? flat_seen : kept;
+    const std::vector<int> guests = charts_to_put_in_empty_texels(charts, cell_areas(charts), choice);
+    if (guests.empty()) return;
+    nested[size_t(i)] = atlas_of(charts, guests, s.unit_V, s.F, s.unit, int(s.V.rows()), s.options);
+    tried[size_t(i)] = true;
+  });
+  for (size_t i = 0; i < choices; ++i) {
+    if (!tried[i] || nested[i].error || !(texture_efficiency(nested[i]) > texture_efficiency(tiled))) continue;
+    nested[i].notes.push_back(std::string("with small charts in empty texels") +
+                              (kGuestChoices[i].flat_seen_along_normal ? " and flat charts as seen along their normal" : "") +
+                              " the atlas has efficiency " + number_text(texture_efficiency(nested[i])) +
+                              " (coverage / L2^2) against " + number_text(tiled_efficiency));
+    tiled = std::move(nested[i]);
+  }
+}
+
+namespace {
+
+// Every chart placed by its outline (atlas_of with all of them as guests).
+ChartsResult packed_whole(const AtlasSearch& s, std::vector<SolvedChart> charts) {
+  std::vector<int> all(charts.size());
+  std::iota(all.begin(), all.end(), 0);
+  return atlas_of(std::move(charts), std::move(all), s.unit_V, s.F, s.unit, int(s.V.rows()), s.options);
+}
+
+}  // namespace
+
+ChartsResult packed_by_outline(const AtlasSearch& s, std::vector<SolvedChart> charts) {
+  map_all_at_own_shape(charts, s.options);  // once for both packings
+  std::vector<SolvedChart> flat_seen = charts;
+  see_flat_charts_along_normal(flat_seen);
+  const auto free_charts = [](const std::vector<SolvedChart>& c) {
+    return std::count_if(c.begin(), c.end(), [](const SolvedChart& chart) { return chart.free_boundary; });
+  };
+  const bool any_flat = free_charts(flat_seen) > free_charts(charts);
+  // Each packing on a core of its own: a packing is one thread's work.
+  ChartsResult packed, flat;
+  for_each_index(any_flat ? 2 : 1, [&](int i, int) {
+    if (i == 0) packed = packed_whole(s, charts);
+    else flat = packed_whole(s, std::move(flat_seen));
+  });
+  if (any_flat && !flat.error && (packed.error || texture_efficiency(flat) > texture_efficiency(packed))) {
+    flat.notes.push_back("flat charts as seen along their normal");
+    packed = std::move(flat);
+  }
+  return packed;
+}
+
+// A cell per chart, each a few texels wide inside its gutter, cannot hold thousands of tiny charts
+// (a scan's debris) on a small texture or with a wide gutter; their outlines need no such floor.
+ChartsResult AtlasSearch::tile(std::vector<SolvedChart> charts) {
+  tried = charts;
+  ChartsResult tiled = atlas_of(std::move(charts), {}, unit_V, F, unit, int(V.rows()), options);
+  if (tiled.error.code != ErrorCode::ChartsNotPacked) return tiled;
+  ChartsResult packed = packed_by_outline(*this, tried);
+  if (packed.error) return tiled;
+  packed.notes.push_back(std::to_string(tried.size()) + " charts are too many for a cell each in the tiling: packed by their outlines");
+  return packed;
+}
+
+// Free outlines
+// pack no denser than boxes, so the freed charts are packed only if they would win at the
+// coverage the boxes reached. Free charts are turned to their smallest box here only: in the
+// steps before, the texture they would save lets merging go further, down to its least efficiency.
+void pack_by_outline_if_better(const AtlasSearch& s, const std::vector<SolvedChart>& kept, ChartsResult& laid_out) {
+  if (kept.empty() || laid_out.error) return;
+  std::vector<SolvedChart> turned = kept;
+  map_all_at_own_shape(turned, s.options);  // turned as mapped, and mapped once for every packing
+  turn_free_charts_to_smallest_box(turned);
+  ChartsResult packed = packed_by_outline(s, turned);
+  std::vector<SolvedChart> freed = std::move(turned);
+  const double to_beat = packed.error ? texture_efficiency(laid_out) : std::max(texture_efficiency(packed), texture_efficiency(laid_out));
+  const double boxes_coverage = packed.error ? 1 : packed.coverage;
+  if (free_where_it_stretches_less(freed, s.options) > 0 && boxes_coverage / mean_l2_squared(freed) > to_beat) {
+    ChartsResult free = packed_whole(s, std::move(freed));
+    if (!free.error && (packed.error || texture_efficiency(free) > texture_efficiency(packed))) {
+      free.notes.push_back("charts mapped free where that stretches them less");
+      packed = std::move(free);
+    }
+  }
+  if (packed.error || !(texture_efficiency(packed) > texture_efficiency(laid_out))) return;
+  packed.notes.push_back("every chart packed by its outline: efficiency " + number_text(texture_efficiency(packed)) +
+                         " (coverage / L2^2) against " + number_text(texture_efficiency(laid_out)) + " tiled");
+  laid_out = std::move(packed);
+}
+
+}  // namespace lowstretch

@@ -1,0 +1,163 @@
+// Merging the best atlas's charts with their neighbours for shorter seams, step by step, each step
+// laid out and measured as the unmerged atlas was.
+#include <algorithm>
+#include <map>
+#include <string>
+#include <utility>
+
+#include "atlas/bound/merge_neighbours.h"
+#include "atlas/chart_map/chart_threads.h"
+#include "atlas/chart_map/free_charts.h"
+#include "atlas/pack/lay_out_charts.h"
+#include "atlas/search/atlas_search.h"
+#include "core/half_edges.h"
+
+namespace lowstretch {
+
+namespace {
+
+// The least efficiency merged charts keep, given the unmerged atlas's. With fewer_seams, an
+// unmerged atlas already below the floor (tiny parts or a wide gutter take the texture) is merged
+// while it keeps its own efficiency, rather than not at all.
+double least_efficiency(const ChartOptions& o, double unmerged) {
+  if (o.min_efficiency > 0) return o.min_efficiency;
+  const double floor = o.fewer_seams ? std::min(kTuning.merge_floor[1], unmerged) : kTuning.merge_floor[0];
+  return std::max(floor, kTuning.merge_keeps[o.fewer_seams] * unmerged);
+}
+
+// Merge steps of one NeighbourMerging, each laid out: tiled with small charts in empty texels, as
+// the unmerged atlas was measured, or packed by outline (free unions, which tile badly, or a least
+// efficiency of the user's own). The step with the shortest seams that keeps the least efficiency
+// replaces the best atlas.
+struct MergeSteps {
+  AtlasSearch& s;
+  NeighbourMerging& merging;
+  double least;
+  bool by_outline;
+  // Packed by outline, every chart keeps the map it has alone, and the steps share most charts:
+  // each is freed or mapped fully once (refined maps cost many solves), by its faces.
+  std::map<std::vector<int>, SolvedChart> mapped;
+
+  void map_once(std::vector<SolvedChart>& charts) {
+    std::vector<SolvedChart> fresh;
+    std::vector<size_t> at;
+    for (size_t i = 0; i < charts.size(); ++i) {
+      const auto found = mapped.find(charts[i].faces);
+      if (found != mapped.end()) {
+        charts[i] = found->second;
+      } else {
+        fresh.push_back(std::move(charts[i]));
+        at.push_back(i);
+      }
+    }
+    free_the_charts_that_stretch(fresh, s.options, s.cut_must_pay);
+    const size_t faces = faces_in(fresh, 0, fresh.size());
+    for_each_index(int(fresh.size()), [&](int i, int) {
+      map_at_own_shape(fresh[size_t(i)], for_share(s.options.disk, fresh[size_t(i)].faces.size(), faces));
+    }, largest_first(fresh, 0, fresh.size()));
+    refine_free_outlines(fresh, s.options);
+    for (size_t k = 0; k < fresh.size(); ++k) {
+      mapped.emplace(fresh[k].faces, fresh[k]);
+      charts[at[k]] = std::move(fresh[k]);
+    }
+  }
+
+  // Whether the first `merges` merges keep the least efficiency.
+  bool keep_least(size_t merges) {
+    std::vector<SolvedChart> charts = merging.charts_after(merges);
+    ChartsResult merged;
+    if (by_outline) {
+      map_once(charts);
+      s.tried = charts;
+      merged = packed_by_outline(s, charts);
+    } else {
+      free_the_charts_that_stretch(charts, s.options, s.cut_must_pay);
+      merged = s.tile(std::move(charts));
+      if (!merged.error) fill_empty_texels(s, s.tried, merged);
+    }
+    if (merged.error || !(texture_efficiency(merged) >= least)) return false;
+    if (merged.seam_length < s.result.seam_length) {
+      s.result = std::move(merged);
+      s.kept = std::move(s.tried);
+    }
+    return true;
+  }
+};
+
+// Rectangle unions, further and further (kTuning.merge_growths, past kTuning.merge_misses steps
+// that fall too far, then halving the first step that went too far after the last good one).
+void merge_along_growths(MergeSteps& steps) {
+  NeighbourMerging& merging = steps.merging;
+  size_t good = 0, bad = 0;  // bad: the first step that failed after the last good one, if any
+  int misses = 0;
+  for (const double growth : kTuning.merge_growths) {
+    merging.merge_within(1 + growth);
+    if (merging.merges() == good || merging.merges() == bad) continue;
+    if (!steps.keep_least(merging.merges())) {
+      if (bad == 0) bad = merging.merges();
+      if (++misses > kTuning.merge_misses) break;
+      continue;
+    }
+    good = merging.merges();
+    bad = 0;
+    misses = 0;
+  }
+  for (int halving = 0; halving < kTuning.merge_halvings && bad > good + 1; ++halving) {
+    const size_t middle = (good + bad) / 2;
+    if (steps.keep_least(middle)) good = middle;
+    else bad = middle;
+  }
+}
+
+// Free unions: a free union can cost less than its two pieces, so growth does not order the
+// steps; every merge within the largest growth is made, then their count is bisected.
+void merge_by_count(MergeSteps& steps) {
+  NeighbourMerging& merging = steps.merging;
+  merging.merge_within(1 + *(std::end(kTuning.merge_growths) - 1));
+  size_t good = 0, bad = merging.merges() + 1;
+  if (merging.merges() == 0 || steps.keep_least(merging.merges())) return;
+  for (int step = 0; step < kTuning.merge_count_bisections && bad > good + 1; ++step) {
+    const size_t middle = (good + bad) / 2;
+    if (steps.keep_least(middle)) good = middle;
+    else bad = middle;
+  }
+}
+
+}  // namespace
+
+// Each union on its own rectangle; with fewer_seams or a least efficiency given, also free (natural boundary)
+// where that costs less, packed by outline. The one with the shortest seams that keeps the least
+// efficiency replaces the best atlas. Whether one did.
+bool merge_for_shorter_seams(AtlasSearch& s) {
+  const double least = least_efficiency(s.options, texture_efficiency(s.result));
+  // A least efficiency of the user's own is kept by the atlas as it is finally laid out, packed by
+  // outline where that beats the tiling: every step is packed so, and an unmerged atlas whose
+  // tiling is below it still merges if its outline packing keeps it.
+  const bool users_least = s.options.min_efficiency > 0;
+  const auto unmerged_keeps_least = [&] {
+    if (texture_efficiency(s.result) >= least) return true;
+    if (!users_least) return false;
+    const ChartsResult packed = packed_by_outline(s, s.kept);
+    return !packed.error && texture_efficiency(packed) >= least;
+  };
+  if (s.result.error || s.cut.empty() || !unmerged_keeps_least()) return false;
+  const ChartsResult unmerged = s.result;
+  const std::vector<int> twin = opposite_half_edges(s.F);
+  for (const bool free_unions : {false, true}) {
+    // A least efficiency of the user's own is a trade-off chosen as fewer_seams is.
+    if (free_unions && ((!s.options.fewer_seams && !users_least) || s.F.rows() > kTuning.most_free_union_faces))
+      continue;
+    NeighbourMerging merging(s.cut, s.unit_V, s.F, twin, s.options, free_unions);
+    MergeSteps steps{s, merging, least, free_unions || users_least, {}};
+    if (free_unions) merge_by_count(steps);
+    else merge_along_growths(steps);
+  }
+  if (s.result.charts.size() >= unmerged.charts.size()) return false;
+  s.notes.push_back(std::to_string(unmerged.charts.size() - s.result.charts.size()) + " charts merged for shorter seams (" +
+                    number_text(unmerged.seam_length) + " -> " + number_text(s.result.seam_length) + "): efficiency " +
+                    number_text(texture_efficiency(s.result)) + " (coverage / L2^2) against " + number_text(texture_efficiency(unmerged)) +
+                    ", at least " + number_text(least));
+  return true;
+}
+
+}  // namespace lowstretch
