@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/disk_mesh.h"
+#include "core/method_types.h"
 
 namespace lowstretch {
 
@@ -33,13 +34,8 @@ Eigen::MatrixXd square_boundary(const DiskMesh& disk, const std::array<int, 4>& 
                                 const std::vector<int>& kinks = {}, double aspect = 1,
                                 const std::vector<int>& ear_tips = {}, double ear_bulge = 0);
 // The square boundary of the method (square_boundary at corners chosen by choose_square_corners),
-// with a note where the corners had to move or sides to bend; `settings` make it a rectangle with
-// corners where the boundary turns and bulging ears, as the atlas's charts have.
-struct RectangleSettings {
-  double aspect = 1;              // as square_boundary's
-  bool corners_at_turns = false;  // as choose_square_corners's
-  double ear_bulge = 0;           // as square_boundary's, from 0 to 1
-};
+// with a note where the corners had to move or sides to bend; `settings` (method_types.h) make it
+// a rectangle with corners where the boundary turns and bulging ears.
 Eigen::MatrixXd rectangle_boundary(const DiskMesh& disk, const RectangleSettings& settings, std::vector<std::string>& notes);
 // 0.8%: small enough that the square map still covers nearly all of the texture; less bulge makes
 // the triangles at the kinks thinner and raises their stretch.

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <memory>
-#include <system_error>
-#include <thread>
 
 #include <amgcl/amg.hpp>
 #include <amgcl/backend/builtin.hpp>
@@ -14,6 +12,7 @@
 #include <boost/range/iterator_range.hpp>
 
 #include "core/metis_lock.h"
+#include "core/thread_pool.h"
 #include "core/reused_coarsening.h"
 
 namespace lowstretch {
@@ -154,9 +153,10 @@ void LaplacianSolver::scatter(const Eigen::MatrixXd& x, Eigen::MatrixXd& uv) con
     if (unknown_[size_t(i)] >= 0) uv.row(i) = x.row(unknown_[size_t(i)]);
 }
 
-// u and v on one thread each, with a hierarchy each (a hierarchy holds its cycle's work vectors),
-// the second a twin of the first that shares its fine matrix, transfer and coarse operators: two
-// threads cost the smoothers' and the coarsest level's set-up twice, not the hierarchy's memory.
+// u and v with a hierarchy each, so that two threads can solve them at once (a hierarchy holds its
+// cycle's work vectors), the second a twin of the first that shares its fine matrix, transfer and
+// coarse operators: two threads cost the smoothers' and the coarsest level's set-up twice, not the
+// hierarchy's memory.
 bool LaplacianSolver::solve_amg(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& x) {
   const int n = int(matrix_.rows());
   if (!transfers_) transfers_ = std::make_unique<Transfers>();
@@ -187,40 +187,29 @@ bool LaplacianSolver::solve_amg(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& x) 
   }
   record.coarse.clear();  // the hierarchies hold them
   report_.seconds_setup = seconds_since(start);
-  double solving[2] = {0, 0};
   size_t iterations[2] = {0, 0};
   bool failed[2] = {false, false};
   auto solve_column = [&](int c) {
     try {
-      const Clock::time_point column_start = Clock::now();
       const Krylov krylov(size_t(n), krylov_prm);
       // The columns in place (Eigen stores them contiguously): no copy of either.
       const auto b = boost::make_iterator_range(rhs.col(c).data(), rhs.col(c).data() + n);
       auto u = boost::make_iterator_range(x.col(c).data(), x.col(c).data() + n);
       double estimate = 0;
       boost::tie(iterations[c], estimate) = krylov(A, *amg[two ? c : 0], b, u);
-      solving[c] = seconds_since(column_start);
     } catch (...) {
       failed[c] = true;
     }
   };
-  bool parallel = two;
+  // On two pool threads when one is idle (core/thread_pool.h), else one after the other.
+  const Clock::time_point solve_start = Clock::now();
   if (two) {
-    try {
-      std::thread v_thread(solve_column, 1);
-      solve_column(0);
-      v_thread.join();
-    } catch (const std::system_error&) {  // no thread to be had: one after the other
-      parallel = false;
-      solve_column(0);
-      solve_column(1);
-    }
+    for_each_index(2, [&](int c, int) { solve_column(c); });
   } else {
     solve_column(0);
     solve_column(1);
   }
-  // Times of u and v add up when they were solved one after the other, not on two threads.
-  report_.seconds_solve = parallel ? std::max(solving[0], solving[1]) : solving[0] + solving[1];
+  report_.seconds_solve = seconds_since(solve_start);
   report_.iterations = int(std::max(iterations[0], iterations[1]));
   report_.relative_residual = std::max(relative_residual(matrix_, rhs.col(0), x.col(0)),
                                        relative_residual(matrix_, rhs.col(1), x.col(1)));

@@ -32,6 +32,9 @@ Error check_options(const Options& o) {
   if (o.refine_iterations < 1 || o.refine_iterations > kMostRefineIterations)
     return {ErrorCode::InvalidOption, 0, "must be from 1 to " + std::to_string(kMostRefineIterations) + ", got " +
                                              std::to_string(o.refine_iterations), "refine_iterations"};
+  const RectangleSettings& r = o.rectangle;
+  if (!(r.aspect >= 0 && r.aspect < 1e6 && r.ear_bulge >= 0 && r.ear_bulge <= 1))
+    return {ErrorCode::InvalidOption, 0, "are out of range (aspect from 0, ear bulge from 0 to 1)", "rectangle settings"};
   const SolverOptions& s = o.solver;
   if (!(s.tolerance > 0 && s.tolerance < 1 && s.residual_accepted >= s.tolerance && s.max_iterations > 0 &&
         s.amg_minimum_rows >= 1))
@@ -48,14 +51,10 @@ std::pair<int, double> rank(const FaceStretch& s) {
 
 Error boundary_positions(const DiskMesh& disk, const Options& options, Eigen::MatrixXd& boundary_uv,
                          std::vector<std::string>& notes) {
-  if (options.place_boundary) {
-    options.place_boundary(disk, boundary_uv, notes);
-    return {};
-  }
   switch (options.boundary) {
     case BoundaryShape::Circle: boundary_uv = circle_boundary(disk); return {};
     case BoundaryShape::Natural: return natural_boundary(disk, boundary_uv);
-    case BoundaryShape::Square: boundary_uv = rectangle_boundary(disk, RectangleSettings(), notes); return {};
+    case BoundaryShape::Square: boundary_uv = rectangle_boundary(disk, options.rectangle, notes); return {};
   }
   return {};
 }

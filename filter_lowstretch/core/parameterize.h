@@ -20,9 +20,7 @@ constexpr int kMostRefineIterations = 10000;
 
 struct Options {
   BoundaryShape boundary = BoundaryShape::Square;
-  // For callers that place the boundary themselves, on a convex polygon (the atlas's rectangles):
-  // called instead of mapping it onto `boundary`, with the rows of disk.boundary to fill.
-  std::function<void(const DiskMesh& disk, Eigen::MatrixXd& boundary_uv, std::vector<std::string>& notes)> place_boundary;
+  RectangleSettings rectangle;  // with Square: the square's aspect, corners and ears
   InitialWeights weights = InitialWeights::Floater;
   double exponent = 1.0;  // eta in (0, 1]: weights are divided by sigma_j^eta each pass
   int max_passes = 10;    // 0: U0 only; 1: U0 and U1; at most kMostPasses

@@ -109,8 +109,6 @@ struct AtlasTuning {
   // subtexel triangles, 1803 charts after the repair rounds). A disk's own refinement has none:
   // there it stopped the mannequin's at 5 steps (L2 1.459 against 1.327).
   double refine_least_area = 1e-6;
-  // Threads for the charts: at most this many, as many as there are cores.
-  int most_threads = 8;
 
   // --- Packing (pack/) ---
   // How far from its own shape a chart may be stretched to fill its cell (width / height ratio);

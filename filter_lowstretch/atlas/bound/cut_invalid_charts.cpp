@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "atlas/base/tuning.h"
+#include "atlas/chart_map/chart_threads.h"
 #include "core/half_edges.h"
 #include "atlas/cut/mesh_components.h"
 #include "atlas/cut/split_chart.h"
@@ -36,6 +37,18 @@ std::vector<std::vector<int>> connected_parts(const std::vector<int>& faces, con
   std::vector<std::vector<int>> parts(static_cast<size_t>(count));
   for (size_t j = 0; j < rest.size(); ++j) parts[size_t(component[j])].push_back(rest[j]);
   return parts;
+}
+
+// Each piece mapped on its own, on the thread pool, largest first.
+void solve_pieces(std::vector<SolvedChart>& pieces, const ChartOptions& options) {
+  const size_t faces = faces_in(pieces, 0, pieces.size());
+  for_each_index(int(pieces.size()), [&](int p, int) {
+    SolvedChart& piece = pieces[size_t(p)];
+    // The piece's map may be replaced by its square map: marked after.
+    solve_chart(piece, for_share(options.disk, piece.faces.size(), faces), 0);
+    piece.kept_whole = "cut where its map was invalid";
+    piece.cut_for_validity = true;
+  }, largest_first(pieces, 0, pieces.size()));
 }
 
 }  // namespace
@@ -114,11 +127,7 @@ int cut_invalid_charts(std::vector<SolvedChart>& charts, std::vector<int>& guest
       add_piece(std::move(part));
     piece_is_guest.resize(pieces.size(), is_guest[c]);
   }
-  for (SolvedChart& piece : pieces) {
-    solve_chart(piece, options.disk, 0);  // may replace the chart by its square map: marked after
-    piece.kept_whole = "cut where its map was invalid";
-    piece.cut_for_validity = true;
-  }
+  solve_pieces(pieces, options);
   std::vector<SolvedChart> kept;
   std::vector<int> new_index(charts.size(), -1);
   for (size_t c = 0; c < charts.size(); ++c)

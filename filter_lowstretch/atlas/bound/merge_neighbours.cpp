@@ -21,7 +21,7 @@ bool has_valid_map(const SolvedChart& c) {
 NeighbourMerging::NeighbourMerging(std::vector<SolvedChart> charts, const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F,
                                    const std::vector<int>& twin, const ChartOptions& options, bool free_unions)
     : unit_V_(unit_V), F_(F), deciding_(deciding_options(options.disk)), free_unions_(free_unions), charts_(charts.size()),
-      local_of_(size_t(kTuning.most_threads)) {
+      local_of_(size_t(kMostThreads)) {
   std::vector<int> piece(size_t(F.rows()), -1);
   for (size_t c = 0; c < charts.size(); ++c) {
     sorted_faces_.push_back(charts[c].faces);

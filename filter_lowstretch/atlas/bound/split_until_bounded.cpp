@@ -288,7 +288,7 @@ bool parts_meet_the_bound(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
 Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, std::vector<std::vector<int>> components,
                           const ChartOptions& options, std::vector<SolvedChart>& leaves, std::vector<SolvedChart>& uncut,
                           std::vector<std::string>& notes) {
-  Splitting s{unit_V, F, options, opposite_half_edges(F), std::vector<std::vector<int>>(kTuning.most_threads), ChartTree(), 0, false};
+  Splitting s{unit_V, F, options, opposite_half_edges(F), std::vector<std::vector<int>>(kMostThreads), ChartTree(), 0, false};
   s.local_of[0].assign(size_t(unit_V.rows()), -1);
   for (std::vector<int>& faces : components) {
     s.tree.nodes.emplace_back();

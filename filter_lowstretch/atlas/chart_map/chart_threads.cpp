@@ -1,24 +1,8 @@
 #include "atlas/chart_map/chart_threads.h"
 
-#include "atlas/base/tuning.h"
-
 #include <algorithm>
-#include <atomic>
-#include <thread>
 
 namespace lowstretch {
-
-void for_each_index(int count, const std::function<void(int, int)>& job, const std::vector<int>& order) {
-  const int threads = std::max(1, std::min<int>(int(std::thread::hardware_concurrency()), std::min(count, kTuning.most_threads)));
-  std::atomic<int> next{0};
-  const auto work = [&](int worker) {
-    for (int k = next++; k < count; k = next++) job(order.empty() ? k : order[size_t(k)], worker);
-  };
-  std::vector<std::thread> workers;
-  for (int t = 1; t < threads; ++t) workers.emplace_back(work, t);
-  work(0);
-  for (std::thread& w : workers) w.join();
-}
 
 std::vector<int> largest_first(const std::vector<SolvedChart>& charts, size_t first, size_t end) {
   std::vector<int> order;

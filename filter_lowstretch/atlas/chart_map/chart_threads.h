@@ -1,22 +1,15 @@
-// How the charts share the cores: a job per chart on up to kTuning.most_threads threads, largest charts
-// first, and the solver options of a chart among those solved at once. A job's result depends on
-// its chart alone, so an atlas is the same every run whatever the threads do.
+// How the charts share the cores: a job per chart on the thread pool (core/thread_pool.h), largest
+// charts first, and the solver options of a chart among those solved at once. A job's result
+// depends on its chart alone, so an atlas is the same every run whatever the threads do.
 #pragma once
 #include <cstddef>
-#include <functional>
 #include <vector>
 
-#include "atlas/base/tuning.h"
-#include "core/parameterize.h"
 #include "atlas/chart_map/solved_chart.h"
+#include "core/parameterize.h"
+#include "core/thread_pool.h"
 
 namespace lowstretch {
-
-// Runs job(i, worker) for i < count on up to kTuning.most_threads threads, each taking the next index
-// left, in `order` (largest charts first, so that no thread is left with a big one at the end);
-// worker (0 .. kTuning.most_threads - 1) names the thread, for scratch space. A job's result depends on
-// its index alone, never on the thread or the timing, so the atlas is the same every run.
-void for_each_index(int count, const std::function<void(int, int)>& job, const std::vector<int>& order = {});
 
 // The indices of charts, most faces first (ties by index).
 std::vector<int> largest_first(const std::vector<SolvedChart>& charts, size_t first, size_t end);

@@ -7,7 +7,6 @@
 
 #include "atlas/base/tuning.h"
 #include "core/boundary_loops.h"
-#include "core/boundary_map.h"
 #include "atlas/cut/close_holes.h"
 #include "atlas/cut/cut_graph.h"
 #include "atlas/cut/cut_mesh.h"
@@ -126,16 +125,9 @@ bool bound_cuts(const SolvedChart& chart, double max_stretch) {
 
 void solve_onto(SolvedChart& chart, Options options, double aspect, bool free_boundary) {
   options.boundary = free_boundary ? BoundaryShape::Natural : BoundaryShape::Square;
-  options.place_boundary = nullptr;
-  if (!free_boundary) {
-    RectangleSettings rectangle;
-    rectangle.aspect = aspect;
-    rectangle.corners_at_turns = true;
-    rectangle.ear_bulge = kTuning.ear_bulge;
-    options.place_boundary = [rectangle](const DiskMesh& disk, Eigen::MatrixXd& boundary_uv, std::vector<std::string>& notes) {
-      boundary_uv = rectangle_boundary(disk, rectangle, notes);
-    };
-  }
+  options.rectangle.aspect = aspect;
+  options.rectangle.corners_at_turns = true;
+  options.rectangle.ear_bulge = kTuning.ear_bulge;
   options.progress = nullptr;  // called from worker threads: the caller reports between rounds
   chart.free_boundary = free_boundary;
   chart.deciding_map = false;
