@@ -2,6 +2,8 @@
 // face with 3D area leaves with a UV triangle of positive area as stored, and nothing overlaps.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <limits>
 #include <map>
 #include <set>
 #include <vector>
@@ -225,4 +227,53 @@ TEST(ValidAsStored, ASliverThatSixDecimalsCollapseGoesAlone) {
     const auto at = [&](int k) { return Eigen::Vector2d(written.block(f, 2 * k, 1, 2).transpose()); };
     EXPECT_GT(signed_area(at(0), at(1), at(2)), 0) << "face " << f;
   }
+}
+
+namespace {
+
+double point_segment_distance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const Eigen::Vector2d d = b - a;
+  const double t = d.squaredNorm() > 0 ? std::min(1.0, std::max(0.0, (p - a).dot(d) / d.squaredNorm())) : 0;
+  return (p - (a + t * d)).norm();
+}
+
+// The distance between two UV triangles that do not overlap: the least from a corner of one to a
+// side of the other.
+double triangle_distance(const ChartsResult& r, Eigen::Index f, Eigen::Index g) {
+  double least = std::numeric_limits<double>::infinity();
+  for (const auto& pair : {std::make_pair(f, g), std::make_pair(g, f)})
+    for (int k = 0; k < 3; ++k)
+      for (int s = 0; s < 3; ++s)
+        least = std::min(least, point_segment_distance(corner(r, pair.first, k), corner(r, pair.second, s),
+                                                       corner(r, pair.second, (s + 1) % 3)));
+  return least;
+}
+
+}  // namespace
+
+TEST(ValidAsStored, AFaceMovedAloneGoesIntoFreeTexelsAndTheRestKeepsItsPlaceAndGutters) {
+  const testmesh::Mesh m = testmesh::sphere(12, 24);
+  const ChartOptions options;
+  ChartsResult r = parameterize_charts(m.V, m.F, options);
+  ASSERT_FALSE(r.error);
+  ASSERT_GE(r.charts.size(), 2u);
+  const Eigen::Index collapsed = 0;
+  for (int k = 1; k < 3; ++k) r.corner_uv.block(collapsed, 2 * k, 1, 2) = r.corner_uv.block(collapsed, 0, 1, 2);
+  const Eigen::MatrixXd unit_V = in_unit_box(m.V);
+  ASSERT_EQ(invalid_faces(unit_V, m.F, r.corner_uv).size(), 1u);
+
+  const ChartsResult fixed = valid_as_stored(unit_V, m.F, 1, int(m.V.rows()), options, r);
+  ASSERT_FALSE(fixed.error);
+  EXPECT_TRUE(invalid_as_written(unit_V, m.F, fixed.corner_uv).empty());
+  expect_valid_layout(m.F, fixed, &m.V);
+  // The layout that stays is not squeezed: every other face keeps its UV (up to float rounding).
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+    if (f != collapsed) EXPECT_LT((fixed.corner_uv.row(f) - r.corner_uv.row(f)).cwiseAbs().maxCoeff(), 1e-6) << "face " << f;
+  // The face alone keeps the gutter from every other face.
+  const double gutter = options.gutter / options.texture_size;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+    if (f != collapsed) nearest = std::min(nearest, triangle_distance(fixed, collapsed, f));
+  EXPECT_GE(nearest, gutter * (1 - 1e-6));
+  EXPECT_EQ(fixed.charts.size(), r.charts.size() + 1);
 }

@@ -8,6 +8,7 @@
 
 #include "atlas/bound/cut_invalid_charts.h"
 #include "atlas/measure/atlas_result.h"
+#include "atlas/measure/free_squares.h"
 #include "core/parameterize.h"
 #include "core/stretch.h"
 
@@ -96,21 +97,6 @@ Strip strip_for(size_t pieces, double area_share, bool none_stays, const ChartOp
   return strip;
 }
 
-// Piece p scaled uniformly into cell p of the strip (less its margin), into uv.
-void put_in_cell(const Piece& piece, size_t p, const Strip& strip, Eigen::MatrixXd& uv) {
-  Eigen::AlignedBox2d box;
-  for (Eigen::Index j = 0; j < piece.corner_uv.rows(); ++j)
-    for (int k = 0; k < 3; ++k) box.extend(Eigen::Vector2d(piece.corner_uv.block(j, 2 * k, 1, 2).transpose()));
-  const double scale = (strip.side - 2 * strip.margin) / box.sizes().maxCoeff();
-  const Eigen::Vector2d origin(double(p % size_t(strip.columns)) * strip.side + strip.margin,
-                               1 - strip.height + double(p / size_t(strip.columns)) * strip.side + strip.margin);
-  for (size_t j = 0; j < piece.faces.size(); ++j)
-    for (int k = 0; k < 3; ++k) {
-      const Eigen::Vector2d corner = piece.corner_uv.block(Eigen::Index(j), 2 * k, 1, 2).transpose();
-      uv.block(piece.faces[j], 2 * k, 1, 2) = (origin + scale * (corner - box.min())).transpose();
-    }
-}
-
 // How a round went: faces made charts of their own, charts mapped again.
 struct Moved {
   int faces = 0, charts = 0;
@@ -157,6 +143,51 @@ Moving pieces_to_move(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, c
   return m;
 }
 
+// The piece scaled uniformly into the square of `side` at `origin`, into uv.
+void put_in_square(const Piece& piece, const Eigen::Vector2d& origin, double side, Eigen::MatrixXd& uv) {
+  Eigen::AlignedBox2d box;
+  for (Eigen::Index j = 0; j < piece.corner_uv.rows(); ++j)
+    for (int k = 0; k < 3; ++k) box.extend(Eigen::Vector2d(piece.corner_uv.block(j, 2 * k, 1, 2).transpose()));
+  const double scale = side / box.sizes().maxCoeff();
+  for (size_t j = 0; j < piece.faces.size(); ++j)
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector2d corner = piece.corner_uv.block(Eigen::Index(j), 2 * k, 1, 2).transpose();
+      uv.block(piece.faces[j], 2 * k, 1, 2) = (origin + scale * (corner - box.min())).transpose();
+    }
+}
+
+// The pieces in squares of the texels the layout that stays leaves free, as large as the strip's
+// cells or down to an eighth of them, the layout kept as it is (in [0,1]^2, which store() moves
+// inside the gutter again): its gutters stay. False if they do not all fit.
+bool put_in_free_texels(const ChartsResult& result, const Moving& m, const Strip& strip, const ChartOptions& options,
+                        Eigen::MatrixXd& uv) {
+  const double g = options.gutter / options.texture_size;
+  std::vector<char> stays(m.moves.size());
+  for (size_t f = 0; f < stays.size(); ++f) stays[f] = !m.moves[f];
+  for (double side = strip.side; side >= strip.side / 8; side /= 2) {
+    const std::vector<Eigen::Vector2d> squares = free_squares(result.corner_uv, stays, m.pieces.size(), side * (1 - 2 * g), options);
+    if (squares.empty()) continue;
+    uv = ((result.corner_uv.array() - g) / (1 - 2 * g)).matrix();
+    for (size_t p = 0; p < m.pieces.size(); ++p)
+      put_in_square(m.pieces[p], ((squares[p].array() - g) / (1 - 2 * g)).matrix(), side, uv);
+    return true;
+  }
+  return false;
+}
+
+// The pieces in the cells of the strip along the top, the layout that stays scaled below it (its
+// gutters shrink with it): where the free texels cannot take them.
+void put_in_strip(const ChartsResult& result, const Moving& m, const Strip& strip, const ChartOptions& options,
+                  Eigen::MatrixXd& uv) {
+  const double g = options.gutter / options.texture_size;
+  uv = ((result.corner_uv.array() - g) / (1 - 2 * g) * (1 - strip.height)).matrix();
+  for (size_t p = 0; p < m.pieces.size(); ++p) {
+    const Eigen::Vector2d origin(double(p % size_t(strip.columns)) * strip.side + strip.margin,
+                                 1 - strip.height + double(p / size_t(strip.columns)) * strip.side + strip.margin);
+    put_in_square(m.pieces[p], origin, strip.side - 2 * strip.margin, uv);
+  }
+}
+
 // The charts after a round: the old ones with the faces that stay (if any), then the pieces.
 void regroup(const ChartsResult& result, const std::vector<std::vector<int>>& faces_of, const Moving& m,
              std::vector<Chart>& charts, std::vector<std::vector<int>>& new_faces_of, std::vector<int>& face_chart) {
@@ -181,8 +212,8 @@ void regroup(const ChartsResult& result, const std::vector<std::vector<int>>& fa
   }
 }
 
-// One round: the pieces laid out in the strip, the rest of the layout below it; stored and
-// measured again.
+// One round: the pieces laid out in free texels (or in the strip, the rest of the layout below
+// it); stored and measured again.
 ChartsResult with_invalid_faces_moved(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, double unit, int vertex_rows,
                                       const ChartOptions& options, ChartsResult result, const std::vector<int>& invalid,
                                       bool map_again, Moved& moved) {
@@ -197,10 +228,8 @@ ChartsResult with_invalid_faces_moved(const Eigen::MatrixXd& unit_V, const Eigen
   const bool none_stays = std::count(m.moves.begin(), m.moves.end(), 1) == F.rows();
   const Strip strip = strip_for(m.pieces.size(), area > 0 ? moved_area / area : 0, none_stays, options);
 
-  // The layout that stays, back in [0,1]^2 (store() moves it inside the gutter again), below the strip.
-  const double g = options.gutter / options.texture_size;
-  Eigen::MatrixXd uv = ((result.corner_uv.array() - g) / (1 - 2 * g) * (1 - strip.height)).matrix();
-  for (size_t p = 0; p < m.pieces.size(); ++p) put_in_cell(m.pieces[p], p, strip, uv);
+  Eigen::MatrixXd uv;
+  if (none_stays || !put_in_free_texels(result, m, strip, options, uv)) put_in_strip(result, m, strip, options, uv);
 
   std::vector<Chart> charts;
   std::vector<std::vector<int>> new_faces_of;

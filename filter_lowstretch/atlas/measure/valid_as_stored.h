@@ -5,8 +5,9 @@
 //   1. a chart holding a flipped face is mapped again with the paper's map onto a square with
 //      Floater's weights, which cannot fold (a chart that is not a disk is taken apart instead);
 //   2. every face still invalid becomes a chart of its own, its 3D shape (a needle: a right
-//      triangle) in a cell of a grid along the top of the texture, the rest of the layout scaled
-//      below it;
+//      triangle) in a square of the texels the layout leaves free, a gutter from everything
+//      (free_squares.h); where they do not all fit, in a cell of a grid along the top of the
+//      texture, the rest of the layout scaled below it;
 // and the result is stored and measured again, until no face is invalid. So a result that is not
 // an error always holds a valid atlas.
 #pragma once
