@@ -277,3 +277,31 @@ TEST(ValidAsStored, AFaceMovedAloneGoesIntoFreeTexelsAndTheRestKeepsItsPlaceAndG
   EXPECT_GE(nearest, gutter * (1 - 1e-6));
   EXPECT_EQ(fixed.charts.size(), r.charts.size() + 1);
 }
+
+TEST(ValidAsStored, WithNoFreeTexelsTheStripKeepsTheGutterFromTheDiskBelow) {
+  // A flat grid is a disk: its one chart fills the square, and the hole the face leaves (under 7
+  // texels wide) cannot take a square a gutter from it; so the face moved alone goes into the strip
+  // along the top and the disk is scaled below it.
+  const testmesh::Mesh m = testmesh::grid(150);
+  const ChartOptions options;
+  ChartsResult r = parameterize_charts(m.V, m.F, options);
+  ASSERT_FALSE(r.error);
+  ASSERT_EQ(r.charts.size(), 1u);
+  const Eigen::Index collapsed = 7;
+  for (int k = 1; k < 3; ++k) r.corner_uv.block(collapsed, 2 * k, 1, 2) = r.corner_uv.block(collapsed, 0, 1, 2);
+  const Eigen::MatrixXd unit_V = in_unit_box(m.V);
+
+  const ChartsResult fixed = valid_as_stored(unit_V, m.F, 1, int(m.V.rows()), options, r);
+  ASSERT_FALSE(fixed.error);
+  EXPECT_TRUE(invalid_as_written(unit_V, m.F, fixed.corner_uv).empty());
+  expect_valid_layout(m.F, fixed, &m.V);
+  ASSERT_EQ(fixed.charts.size(), 2u);
+  double moved = 0;
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+    if (f != collapsed) moved = std::max(moved, (fixed.corner_uv.row(f) - r.corner_uv.row(f)).cwiseAbs().maxCoeff());
+  EXPECT_GT(moved, 1e-3) << "the disk is scaled below the strip";
+  double nearest = std::numeric_limits<double>::infinity();
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+    if (f != collapsed) nearest = std::min(nearest, triangle_distance(fixed, collapsed, f));
+  EXPECT_GE(nearest, options.gutter / options.texture_size * (1 - 1e-6));
+}

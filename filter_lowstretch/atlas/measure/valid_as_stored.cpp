@@ -75,6 +75,13 @@ bool mapped_again(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const
   return true;
 }
 
+// The gutter in [0,1]^2 as the layout is before store() moves it inside the gutter, shrinking it
+// by 1 - 2g.
+double gutter_before_store(const ChartOptions& options) {
+  const double g = options.gutter / options.texture_size;
+  return g / (1 - 2 * g);
+}
+
 // Square cells in rows along the top of [0,1]^2, as many as the pieces; the strip is as high as
 // the moved faces' share of the area (at least 8 gutters, at most half the texture, all of it if
 // no face stays).
@@ -93,7 +100,8 @@ Strip strip_for(size_t pieces, double area_share, bool none_stays, const ChartOp
   strip.columns = int(std::floor(1 / strip.side));
   strip.height = rows(strip.side) * strip.side;
   // Half a gutter on each side of a cell where cells are wide enough, else an eighth of the cell.
-  strip.margin = strip.side >= 4 * g ? g / 2 : strip.side / 8;
+  const double gutter = gutter_before_store(options);
+  strip.margin = strip.side >= 4 * gutter ? gutter / 2 : strip.side / 8;
   return strip;
 }
 
@@ -175,12 +183,26 @@ bool put_in_free_texels(const ChartsResult& result, const Moving& m, const Strip
   return false;
 }
 
-// The pieces in the cells of the strip along the top, the layout that stays scaled below it (its
-// gutters shrink with it): where the free texels cannot take them.
+// The pieces in the cells of the strip along the top, the layout that stays scaled below it,
+// a gutter lower. Its gutters shrink with it: each chart that stays also shrinks about its box's
+// centre by what they lost, which gives them back (a chart under twice that loss, a speck, shrinks
+// to half its size and keeps less).
 void put_in_strip(const ChartsResult& result, const Moving& m, const Strip& strip, const ChartOptions& options,
                   Eigen::MatrixXd& uv) {
   const double g = options.gutter / options.texture_size;
-  uv = ((result.corner_uv.array() - g) / (1 - 2 * g) * (1 - strip.height)).matrix();
+  const double scale = 1 - strip.height - strip.margin;
+  uv = ((result.corner_uv.array() - g) / (1 - 2 * g) * scale).matrix();
+  const double lost = gutter_before_store(options) * (1 - scale);
+  std::vector<Eigen::AlignedBox2d> boxes(result.charts.size());
+  const auto corner = [&](Eigen::Index f, int k) { return Eigen::Vector2d(uv.block(f, 2 * k, 1, 2).transpose()); };
+  for (Eigen::Index f = 0; f < uv.rows(); ++f)
+    for (int k = 0; k < 3 && !m.moves[size_t(f)]; ++k) boxes[size_t(result.face_chart[size_t(f)])].extend(corner(f, k));
+  for (Eigen::Index f = 0; f < uv.rows(); ++f) {
+    if (m.moves[size_t(f)]) continue;
+    const Eigen::AlignedBox2d& box = boxes[size_t(result.face_chart[size_t(f)])];
+    const double shrink = std::max(0.5, 1 - lost / box.sizes().minCoeff());
+    for (int k = 0; k < 3; ++k) uv.block(f, 2 * k, 1, 2) = (box.center() + shrink * (corner(f, k) - box.center())).transpose();
+  }
   for (size_t p = 0; p < m.pieces.size(); ++p) {
     const Eigen::Vector2d origin(double(p % size_t(strip.columns)) * strip.side + strip.margin,
                                  1 - strip.height + double(p / size_t(strip.columns)) * strip.side + strip.margin);

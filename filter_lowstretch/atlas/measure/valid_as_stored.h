@@ -7,7 +7,7 @@
 //   2. every face still invalid becomes a chart of its own, its 3D shape (a needle: a right
 //      triangle) in a square of the texels the layout leaves free, a gutter from everything
 //      (free_squares.h); where they do not all fit, in a cell of a grid along the top of the
-//      texture, the rest of the layout scaled below it;
+//      texture, the rest of the layout scaled below it, each chart shrunk to keep its gutters;
 // and the result is stored and measured again, until no face is invalid. So a result that is not
 // an error always holds a valid atlas.
 #pragma once
