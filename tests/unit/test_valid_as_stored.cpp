@@ -249,6 +249,14 @@ double triangle_distance(const ChartsResult& r, Eigen::Index f, Eigen::Index g) 
   return least;
 }
 
+// The distance from face `alone` to the nearest other face in UV.
+double nearest_other_face(const ChartsResult& r, Eigen::Index alone) {
+  double nearest = std::numeric_limits<double>::infinity();
+  for (Eigen::Index f = 0; f < Eigen::Index(r.face_chart.size()); ++f)
+    if (f != alone) nearest = std::min(nearest, triangle_distance(r, alone, f));
+  return nearest;
+}
+
 }  // namespace
 
 TEST(ValidAsStored, AFaceMovedAloneGoesIntoFreeTexelsAndTheRestKeepsItsPlaceAndGutters) {
@@ -270,11 +278,7 @@ TEST(ValidAsStored, AFaceMovedAloneGoesIntoFreeTexelsAndTheRestKeepsItsPlaceAndG
   for (Eigen::Index f = 0; f < m.F.rows(); ++f)
     if (f != collapsed) EXPECT_LT((fixed.corner_uv.row(f) - r.corner_uv.row(f)).cwiseAbs().maxCoeff(), 1e-6) << "face " << f;
   // The face alone keeps the gutter from every other face.
-  const double gutter = options.gutter / options.texture_size;
-  double nearest = std::numeric_limits<double>::infinity();
-  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
-    if (f != collapsed) nearest = std::min(nearest, triangle_distance(fixed, collapsed, f));
-  EXPECT_GE(nearest, gutter * (1 - 1e-6));
+  EXPECT_GE(nearest_other_face(fixed, collapsed), options.gutter / options.texture_size * (1 - 1e-6));
   EXPECT_EQ(fixed.charts.size(), r.charts.size() + 1);
 }
 
@@ -300,8 +304,5 @@ TEST(ValidAsStored, WithNoFreeTexelsTheStripKeepsTheGutterFromTheDiskBelow) {
   for (Eigen::Index f = 0; f < m.F.rows(); ++f)
     if (f != collapsed) moved = std::max(moved, (fixed.corner_uv.row(f) - r.corner_uv.row(f)).cwiseAbs().maxCoeff());
   EXPECT_GT(moved, 1e-3) << "the disk is scaled below the strip";
-  double nearest = std::numeric_limits<double>::infinity();
-  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
-    if (f != collapsed) nearest = std::min(nearest, triangle_distance(fixed, collapsed, f));
-  EXPECT_GE(nearest, options.gutter / options.texture_size * (1 - 1e-6));
+  EXPECT_GE(nearest_other_face(fixed, collapsed), options.gutter / options.texture_size * (1 - 1e-6));
 }

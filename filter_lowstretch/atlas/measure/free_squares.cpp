@@ -23,11 +23,7 @@ std::vector<Eigen::Vector2d> free_squares(const Eigen::MatrixXd& corner_uv, cons
     take_triangle(grid, p);
   }
   grid.grow(gutter);  // from here a taken cell is one a square may not use
-  grid.take(0, 0, cells, gutter);
-  grid.take(0, cells - gutter, cells, cells);
-  grid.take(0, 0, gutter, cells);
-  grid.take(cells - gutter, 0, cells, cells);
-  grid.count_runs(0, cells);
+  grid.take_border(gutter);
   const std::vector<std::vector<std::pair<int, int>>> rows(size_t(square), {{0, square}});
   std::vector<Eigen::Vector2d> corners;
   for (size_t s = 0; s < count; ++s) {

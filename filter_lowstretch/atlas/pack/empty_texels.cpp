@@ -41,16 +41,6 @@ GridFrame grid_frame(const ChartOptions& options) {
   return frame;
 }
 
-// Takes the border's gutter, and counts the free runs of every row.
-void take_border(const GridFrame& frame, TexelGrid& grid) {
-  const int side = frame.side, gutter = frame.gutter;
-  grid.take(0, 0, side, gutter);
-  grid.take(0, side - gutter, side, side);
-  grid.take(0, 0, gutter, side);
-  grid.take(side - gutter, 0, side, side);
-  grid.count_runs(0, side);
-}
-
 // Takes the cells of the tiled charts (not the guests), grown by the gutter, and the border's
 // gutter; returns their texel density, in grid cells^2 per unit of 3D area.
 double take_tiled_charts(const std::vector<SolvedChart>& charts, const std::vector<char>& is_guest,
@@ -68,7 +58,7 @@ double take_tiled_charts(const std::vector<SolvedChart>& charts, const std::vect
   }
   // From here a taken cell is one a guest may not use.
   grid.grow(frame.gutter);
-  take_border(frame, grid);
+  grid.take_border(frame.gutter);
   return area_3d > 0 ? uv_area / area_3d : 0;
 }
 
@@ -184,7 +174,7 @@ bool pack_by_outline(const std::vector<SolvedChart>& charts, const ChartOptions&
                      std::vector<int>& face_chart) {
   const GridFrame frame = grid_frame(options);
   TexelGrid empty(frame.side);
-  take_border(frame, empty);
+  empty.take_border(frame.gutter);
   std::vector<int> all(charts.size());
   std::iota(all.begin(), all.end(), 0);
   const std::vector<int> order = larger_first(charts, all);

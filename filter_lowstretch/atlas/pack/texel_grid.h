@@ -25,6 +25,14 @@ class TexelGrid {
     x0 = std::max(x0, 0), y0 = std::max(y0, 0), x1 = std::min(x1, side_), y1 = std::min(y1, side_);
     for (int y = y0; y < y1 && x0 < x1; ++y) std::fill(taken_.begin() + long(index(x0, y)), taken_.begin() + long(index(x1, y)), 1);
   }
+  // Takes the cells within `gutter` of the border, and counts the free runs of every row.
+  void take_border(int gutter) {
+    take(0, 0, side_, gutter);
+    take(0, side_ - gutter, side_, side_);
+    take(0, 0, gutter, side_);
+    take(side_ - gutter, 0, side_, side_);
+    count_runs(0, side_);
+  }
   // Takes every cell within `by` cells of a taken one (a square around each): each row ORed with
   // its neighbours `by` cells either way, then with the rows `by` above and below (whole rows at
   // a time, which the compiler vectorizes; a column at a time strides through memory).
