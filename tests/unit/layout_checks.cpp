@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace lowstretch {
@@ -82,6 +83,35 @@ void expect_valid_layout(const Eigen::MatrixXi& F, const ChartsResult& r, const 
     EXPECT_GE(c, 0);
     EXPECT_LT(c, int(r.charts.size()));
   }
+}
+
+// The least distance between two triangles that do not overlap: from a corner of one to a side of
+// the other.
+double triangle_distance(const Eigen::Vector2d a[3], const Eigen::Vector2d b[3]) {
+  const auto to_side = [](const Eigen::Vector2d& p, const Eigen::Vector2d& s, const Eigen::Vector2d& t) {
+    const double along = std::min(1.0, std::max(0.0, (p - s).dot(t - s) / (t - s).squaredNorm()));
+    return (p - (s + along * (t - s))).norm();
+  };
+  double least = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) {
+      least = std::min(least, to_side(a[i], b[k], b[(k + 1) % 3]));
+      least = std::min(least, to_side(b[i], a[k], a[(k + 1) % 3]));
+    }
+  return least;
+}
+
+// The least distance between triangles of different charts, in UV.
+double least_distance_between_charts(const Eigen::MatrixXi& F, const ChartsResult& r) {
+  double least = std::numeric_limits<double>::infinity();
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    for (Eigen::Index g = f + 1; g < F.rows(); ++g) {
+      if (r.face_chart[size_t(f)] == r.face_chart[size_t(g)]) continue;
+      const Eigen::Vector2d a[3] = {corner(r, f, 0), corner(r, f, 1), corner(r, f, 2)};
+      const Eigen::Vector2d b[3] = {corner(r, g, 0), corner(r, g, 1), corner(r, g, 2)};
+      least = std::min(least, triangle_distance(a, b));
+    }
+  return least;
 }
 
 }  // namespace lowstretch

@@ -24,35 +24,6 @@ using namespace lowstretch;
 
 namespace {
 
-// The least distance between two triangles that do not overlap: from a corner of one to a side of
-// the other.
-double triangle_distance(const Eigen::Vector2d a[3], const Eigen::Vector2d b[3]) {
-  const auto to_side = [](const Eigen::Vector2d& p, const Eigen::Vector2d& s, const Eigen::Vector2d& t) {
-    const double along = std::min(1.0, std::max(0.0, (p - s).dot(t - s) / (t - s).squaredNorm()));
-    return (p - (s + along * (t - s))).norm();
-  };
-  double least = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < 3; ++i)
-    for (int k = 0; k < 3; ++k) {
-      least = std::min(least, to_side(a[i], b[k], b[(k + 1) % 3]));
-      least = std::min(least, to_side(b[i], a[k], a[(k + 1) % 3]));
-    }
-  return least;
-}
-
-// The least distance between triangles of different charts, in UV.
-double least_distance_between_charts(const Eigen::MatrixXi& F, const ChartsResult& r) {
-  double least = std::numeric_limits<double>::infinity();
-  for (Eigen::Index f = 0; f < F.rows(); ++f)
-    for (Eigen::Index g = f + 1; g < F.rows(); ++g) {
-      if (r.face_chart[size_t(f)] == r.face_chart[size_t(g)]) continue;
-      const Eigen::Vector2d a[3] = {corner(r, f, 0), corner(r, f, 1), corner(r, f, 2)};
-      const Eigen::Vector2d b[3] = {corner(r, g, 0), corner(r, g, 1), corner(r, g, 2)};
-      least = std::min(least, triangle_distance(a, b));
-    }
-  return least;
-}
-
 // Each chart's UV box and texel density (its UV area over its 3D area).
 struct ChartPlaces {
   std::vector<Eigen::AlignedBox2d> box;
@@ -234,12 +205,11 @@ TEST(EmptyTexels, GuestsAreTheSmallestChartsThatFitTheExpectedEmptyTexels) {
   EXPECT_TRUE(charts_to_put_in_empty_texels(charts, own, {true, 0.005 / empty, false}).empty());
 }
 
-// Every chart packed by its outline on an empty grid (pack_by_outline): each placed whole, unturned
-// or turned by quarter turns (never mirrored), at one texel density, a gutter (in texels of the
-// stored layout) from every other chart, inside [0,1]^2; the densest packing covers more than half
-// of the texture.
-TEST(PackByOutline, EveryChartAtOneDensityAGutterApartInsideTheTexture) {
-  testmesh::Mesh m = testmesh::punched_grid(16, {{0.5, 0.5}}, 0.3);
+namespace {
+
+// A punched grid and five small grids, one chart each.
+std::vector<SolvedChart> six_charts(testmesh::Mesh& m) {
+  m = testmesh::punched_grid(16, {{0.5, 0.5}}, 0.3);
   const double scales[] = {0.6, 0.4, 0.25, 0.15, 0.1};
   for (size_t i = 0; i < 5; ++i) m = testmesh::joined(m, testmesh::grid(4), scales[i], Eigen::RowVector3d(3 + 2 * double(i), 0, 0));
   int count = 0;
@@ -248,16 +218,23 @@ TEST(PackByOutline, EveryChartAtOneDensityAGutterApartInsideTheTexture) {
   for (Eigen::Index f = 0; f < m.F.rows(); ++f) faces[size_t(component[size_t(f)])].push_back(int(f));
   std::vector<SolvedChart> charts;
   for (const std::vector<int>& part : faces) charts.push_back(solved_chart_of(m, part));
-  ChartOptions options;
+  return charts;
+}
+
+// Packs the charts by outline from `density` (0: none); checks that each is placed whole, unturned
+// or turned by quarter turns (never mirrored), at the density returned, a gutter (in texels of the
+// stored layout) from every other chart, inside [0,1]^2. Returns the share of the texture covered.
+double check_packing(const testmesh::Mesh& m, const std::vector<SolvedChart>& charts, const ChartOptions& options,
+                     double& density) {
   ChartsResult r;
   r.corner_uv = Eigen::MatrixXd::Constant(m.F.rows(), 6, -7);
   r.face_chart.assign(size_t(m.F.rows()), -1);
-  ASSERT_TRUE(pack_by_outline(charts, options, r.corner_uv, r.face_chart));
+  EXPECT_TRUE(pack_by_outline(charts, options, r.corner_uv, r.face_chart, density));
   std::vector<double> uv(charts.size(), 0), area(charts.size(), 0);
   double covered = 0;
   for (size_t c = 0; c < charts.size(); ++c)
     for (const int f : charts[c].faces) {
-      ASSERT_EQ(r.face_chart[size_t(f)], int(c)) << "face " << f;
+      EXPECT_EQ(r.face_chart[size_t(f)], int(c)) << "face " << f;
       const Eigen::Vector2d p[3] = {corner(r, f, 0), corner(r, f, 1), corner(r, f, 2)};
       for (const Eigen::Vector2d& q : p) EXPECT_TRUE(q.minCoeff() >= 0 && q.maxCoeff() <= 1) << "face " << f;
       EXPECT_GT(signed_area(p[0], p[1], p[2]), 0) << "face " << f;
@@ -265,11 +242,43 @@ TEST(PackByOutline, EveryChartAtOneDensityAGutterApartInsideTheTexture) {
       area[c] += 0.5 * (b - a).cross(d - a).norm();
       uv[c] += signed_area(p[0], p[1], p[2]);
     }
+  // The grid is the texture's texels: a unit of the layout is texture_size - 2 gutters cells.
+  const double cells = options.texture_size - 2 * options.gutter;
   for (size_t c = 0; c < charts.size(); ++c) {
-    EXPECT_NEAR((uv[c] / area[c]) / (uv[0] / area[0]), 1.0, 1e-6) << "chart " << c;
+    EXPECT_NEAR(uv[c] * cells * cells / area[c] / density, 1.0, 1e-6) << "chart " << c;
     covered += uv[c];
   }
-  EXPECT_GT(covered, 0.5);
-  const double texels = options.texture_size - 2 * options.gutter;  // per unit of the layout, once stored
-  EXPECT_GE(least_distance_between_charts(m.F, r) * texels, options.gutter * (1 - 1e-6));
+  EXPECT_GE(least_distance_between_charts(m.F, r) * cells, options.gutter * (1 - 1e-6));
+  return covered;
+}
+
+}  // namespace
+
+// Every chart packed by its outline on an empty grid (pack_by_outline), at one texel density,
+// apart and inside the texture; the densest packing covers more than half of the texture.
+TEST(PackByOutline, EveryChartAtOneDensityAGutterApartInsideTheTexture) {
+  testmesh::Mesh m;
+  const std::vector<SolvedChart> charts = six_charts(m);
+  double density = 0;
+  EXPECT_GT(check_packing(m, charts, ChartOptions(), density), 0.5);
+}
+
+// A density to start from (a repair's next round): from the one found, the same layout; from far
+// below or above it, a valid one within the bisection's last step of where the search stops, as
+// dense as the cold search's give or take the fit's ups and downs (not monotone in density).
+TEST(PackByOutline, StartingFromAGivenDensityFindsAsDenseALayout) {
+  testmesh::Mesh m;
+  const std::vector<SolvedChart> charts = six_charts(m);
+  const ChartOptions options;
+  double cold = 0;
+  const double cold_covered = check_packing(m, charts, options, cold);
+  double same = cold;
+  EXPECT_EQ(check_packing(m, charts, options, same), cold_covered);
+  EXPECT_EQ(same, cold);
+  for (const double start : {cold / 5, cold * 1.5}) {
+    double warm = start;
+    const double covered = check_packing(m, charts, options, warm);
+    EXPECT_GT(covered, 0.9 * cold_covered) << "from " << start;
+    EXPECT_LT(warm, 1.5 * cold) << "from " << start;
+  }
 }

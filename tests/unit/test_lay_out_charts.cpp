@@ -157,7 +157,8 @@ TEST(LayOutCharts, EveryChartInItsCellHalfAGutterInside) {
   options.gutter = 4;
   const double g = 4.0 / 256, inset = 0.5 * g / (1 - 2 * g);
   ChartsResult r;
-  ASSERT_FALSE(lay_out(charts, options, m.F.rows(), {}, r));
+  double outline_density = 0;
+  ASSERT_FALSE(lay_out(charts, options, m.F.rows(), {}, r, outline_density));
   ASSERT_EQ(r.corner_uv.rows(), m.F.rows());
   std::vector<Eigen::AlignedBox2d> box(3);
   for (size_t c = 0; c < 3; ++c)

@@ -211,9 +211,9 @@ void note_charts_above_bound(size_t chart_count, double max_stretch, ChartsResul
 // chart.
 ChartsResult lay_out_and_store(std::vector<SolvedChart>& charts, const std::vector<int>& guests, const std::vector<int>& flat,
                                const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, double unit, int vertex_rows,
-                               const ChartOptions& options) {
+                               const ChartOptions& options, double& outline_density) {
   ChartsResult result;
-  if (Error e = lay_out(charts, options, F.rows(), guests, result)) return failed_result(e);
+  if (Error e = lay_out(charts, options, F.rows(), guests, result, outline_density)) return failed_result(e);
   std::vector<std::vector<int>> faces_of;
   std::vector<std::vector<ChartPass>> passes;
   std::vector<int> kept;
@@ -247,11 +247,12 @@ ChartsResult lay_out_and_store(std::vector<SolvedChart>& charts, const std::vect
 }  // namespace
 
 ChartsResult atlas_of(std::vector<SolvedChart> charts, std::vector<int> guests, const Eigen::MatrixXd& unit_V,
-                      const Eigen::MatrixXi& F, double unit, int vertex_rows, const ChartOptions& options) {
-  std::vector<int> flat;
+                      const Eigen::MatrixXi& F, double unit, int vertex_rows, const ChartOptions& options,
+                      std::vector<int> flat) {
   size_t cut = 0;  // charts cut where their map was invalid
+  double outline_density = 0;  // a round after a cut starts packing at the last round's density
   for (int round = 0;; ++round) {
-    ChartsResult result = lay_out_and_store(charts, guests, flat, unit_V, F, unit, vertex_rows, options);
+    ChartsResult result = lay_out_and_store(charts, guests, flat, unit_V, F, unit, vertex_rows, options, outline_density);
     const std::vector<int> invalid =
         result.error ? std::vector<int>() : without_specks(unit_V, F, result.corner_uv, invalid_faces(unit_V, F, result.corner_uv));
     // Charts to cut in two: pieces far above the bound, and charts whose map folds a face that

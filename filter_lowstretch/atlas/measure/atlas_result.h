@@ -15,9 +15,10 @@ ChartsResult failed_result(Error error);
 
 // The charts laid out and measured as the result; the guests go into texels the tiling leaves
 // empty (lay_out). Charts with invalid faces as stored, specks aside, are cut and laid out again
-// (cut_invalid_charts.h).
+// (cut_invalid_charts.h). The `flat` faces (of no 3D area, in no chart) sit on one point.
 ChartsResult atlas_of(std::vector<SolvedChart> charts, std::vector<int> guests, const Eigen::MatrixXd& unit_V,
-                      const Eigen::MatrixXi& F, double unit, int vertex_rows, const ChartOptions& options);
+                      const Eigen::MatrixXi& F, double unit, int vertex_rows, const ChartOptions& options,
+                      std::vector<int> flat = {});
 
 // The layout as MeshLab stores it: inside the gutter, rounded to float, then measured; counts
 // the triangles no texture shows (smaller than a texel of 4096^2) and those that rounding flips or

@@ -158,6 +158,41 @@ std::vector<int> larger_first(const std::vector<SolvedChart>& charts, std::vecto
   return order;
 }
 
+// The densest layout the grid holds, to a ratio of 2^(1/2^bisections), or 0 if none: at `full`
+// the charts would cover every cell. `fits(density)` lays the charts out; the last call that
+// returned true is at the density returned.
+template <class Fits>
+double densest_that_fits(const Fits& fits, double full, double start) {
+  const double step = std::pow(2.0, std::ldexp(1.0, -kTuning.packing_bisections));
+  double low = 0, high = 0;  // all fit at low, not at high
+  if (start > 0 && start < full) {
+    // Near a density that held nearly these charts (a repair's next round): steps up or down
+    // from it, each the square of the last, until the fit changes.
+    const bool up = fits(start);
+    double near = start, ratio = step;
+    for (int tries = 0; tries < kTuning.packing_bisections + kTuning.most_packing_halvings && !(low > 0); ++tries, ratio *= ratio) {
+      const double next = up ? std::min(near * ratio, full) : near / ratio;
+      if (fits(next) != up) low = up ? near : next, high = up ? next : near;
+      else if (up && next == full) low = high = full;
+      near = next;
+    }
+  }
+  if (!(low > 0)) {  // halving from full until all fit
+    high = full, low = high / 2;
+    for (int halving = 0; !fits(low); ++halving) {
+      if (halving == kTuning.most_packing_halvings) return 0;
+      high = low;
+      low /= 2;
+    }
+  }
+  while (high / low > step * (1 + 1e-9)) {
+    const double middle = std::sqrt(low * high);
+    if (fits(middle)) low = middle;
+    else high = middle;
+  }
+  return low;
+}
+
 }  // namespace
 
 std::vector<int> put_in_empty_texels(const std::vector<SolvedChart>& charts, const std::vector<int>& guests,
@@ -171,7 +206,7 @@ std::vector<int> put_in_empty_texels(const std::vector<SolvedChart>& charts, con
 }
 
 bool pack_by_outline(const std::vector<SolvedChart>& charts, const ChartOptions& options, Eigen::MatrixXd& corner_uv,
-                     std::vector<int>& face_chart) {
+                     std::vector<int>& face_chart, double& density) {
   const GridFrame frame = grid_frame(options);
   TexelGrid empty(frame.side);
   empty.take_border(frame.gutter);
@@ -191,8 +226,8 @@ bool pack_by_outline(const std::vector<SolvedChart>& charts, const ChartOptions&
     std::vector<int> face_chart;
     bool fits = false;
   };
-  const auto fits = [&](double density) {
-    Outlines outlines(charts, density, frame.side);
+  const auto fits = [&](double at) {
+    Outlines outlines(charts, at, frame.side);
     outlines.draw_all();
     std::array<Try, 2> tries{{{corner_uv, face_chart}, {corner_uv, face_chart}}};
     for_each_index(2, [&](int i, int) {
@@ -209,19 +244,10 @@ bool pack_by_outline(const std::vector<SolvedChart>& charts, const ChartOptions&
       }
     return false;
   };
-  // The densest layout the grid holds, found by bisection: at `high` the charts would cover every
-  // cell; halving the density until all fit, then narrowing down.
-  double high = inside * inside / area_3d, low = high / 2;
-  for (int halving = 0; !fits(low); ++halving) {
-    if (halving == kTuning.most_packing_halvings) return false;
-    high = low;
-    low /= 2;
-  }
-  for (int step = 0; step < kTuning.packing_bisections; ++step) {
-    const double middle = std::sqrt(low * high);
-    if (fits(middle)) low = middle;
-    else high = middle;
-  }
+  const double full = inside * inside / area_3d;
+  const double found = densest_that_fits(fits, full, density);
+  if (!(found > 0)) return false;
+  density = found;
   corner_uv = std::move(best_uv);
   face_chart = std::move(best_chart);
   return true;

@@ -46,8 +46,9 @@ std::vector<int> put_in_empty_texels(const std::vector<SolvedChart>& charts, con
 // each chart turned so that its place has the lowest bottom or, where that does not fit them all,
 // the lowest top. Free charts and charts with holes fit into each other; rectangles keep their
 // own shape. False if even a tiny density leaves a chart without room (corner_uv and face_chart
-// then mean nothing).
+// then mean nothing). density: in, 0 or one that held nearly these charts (the search starts
+// there); out, the layout's (grid cells^2 per unit of 3D area).
 bool pack_by_outline(const std::vector<SolvedChart>& charts, const ChartOptions& options, Eigen::MatrixXd& corner_uv,
-                     std::vector<int>& face_chart);
+                     std::vector<int>& face_chart, double& density);
 
 }  // namespace lowstretch

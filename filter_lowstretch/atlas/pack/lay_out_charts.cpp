@@ -165,7 +165,7 @@ Error write_tiled_corners(const std::vector<SolvedChart>& charts, const std::vec
 }  // namespace
 
 Error lay_out(std::vector<SolvedChart>& charts, const ChartOptions& options, Eigen::Index face_count,
-              const std::vector<int>& guests, ChartsResult& result) {
+              const std::vector<int>& guests, ChartsResult& result, double& outline_density) {
   std::vector<char> tiled(charts.size(), 1);
   for (const int i : guests) tiled[size_t(i)] = 0;
   if (!charts.empty() && guests.size() == charts.size()) {  // no tiling: every chart by its outline
@@ -175,7 +175,7 @@ Error lay_out(std::vector<SolvedChart>& charts, const ChartOptions& options, Eig
       if (c.map.error) return c.map.error;
     result.corner_uv.resize(face_count, 6);
     result.face_chart.assign(size_t(face_count), 0);
-    if (!pack_by_outline(charts, options, result.corner_uv, result.face_chart))
+    if (!pack_by_outline(charts, options, result.corner_uv, result.face_chart, outline_density))
       return {ErrorCode::ChartsNotPacked, static_cast<long long>(charts.size()), ""};
     return {};
   }

@@ -24,7 +24,8 @@ void map_all_at_own_shape(std::vector<SolvedChart>& charts, const ChartOptions& 
 // cell's shape (turned a quarter if the chart is wider the other way), then fitted into the cell
 // less half the gutter on each side; then the guests into empty texels, those without room going
 // back into the tiling (ChartsNotPacked if some still find none). Fills corner_uv and face_chart.
+// Every chart a guest: all packed by outline, outline_density as pack_by_outline's density.
 Error lay_out(std::vector<SolvedChart>& charts, const ChartOptions& options, Eigen::Index face_count,
-              const std::vector<int>& guests, ChartsResult& result);
+              const std::vector<int>& guests, ChartsResult& result, double& outline_density);
 
 }  // namespace lowstretch
