@@ -17,8 +17,6 @@
 
 namespace lowstretch {
 
-namespace {
-
 Error check_chart_options(const ChartOptions& o) {
   if (!(o.max_stretch >= 1 && o.max_stretch < 1e6))
     return {ErrorCode::InvalidOption, 0, "must be at least 1, got " + number_text(o.max_stretch), "max_stretch"};
@@ -35,6 +33,8 @@ Error check_chart_options(const ChartOptions& o) {
             "gutter"};
   return {};
 }
+
+namespace {
 
 // A disk as one chart: parameterize's map and pass history; measured later, like a layout.
 ChartsResult from_disk(const Eigen::MatrixXi& F, Result disk) {

@@ -27,6 +27,9 @@ namespace lowstretch {
 // non-manifold or non-orientable input stays an error.
 ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options);
 
+// The options' values in range (InvalidOption names the first that is not).
+Error check_chart_options(const ChartOptions& options);
+
 // Whether making charts gets past this error of the disk check (a cut into disks or a manifold copy
 // fixes it): the caller then adds how its user asks for charts.
 bool charts_would_help(ErrorCode code);

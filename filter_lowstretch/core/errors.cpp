@@ -60,6 +60,10 @@ std::string message(const Error& e) {
       return "the packer could not place the " + n(e.count) +
              " charts in the unit square: remove tiny parts (MeshLab: Remove Isolated pieces), or choose a larger "
              "texture or a narrower gutter, and try again";
+    case ErrorCode::NoTextureCoordinates:
+      return "there is no atlas to pack again: " + plural(e.count, "face has", "faces have") +
+             " no usable per-corner texture coordinates (missing, NaN or infinite, or a chart with no texture area); "
+             "parameterize the mesh first, then pack it again";
     case ErrorCode::Cancelled: return "cancelled";
   }
   return "unknown error";
@@ -95,6 +99,7 @@ const char* code_name(ErrorCode code) {
     case ErrorCode::InvalidOption: return "invalid_option";
     case ErrorCode::SolverFailed: return "solver_failed";
     case ErrorCode::ChartsNotPacked: return "charts_not_packed";
+    case ErrorCode::NoTextureCoordinates: return "no_texture_coordinates";
     case ErrorCode::Cancelled: return "cancelled";
   }
   return "unknown";

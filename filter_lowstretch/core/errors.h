@@ -24,6 +24,7 @@ enum class ErrorCode {
   InvalidOption,            // count: unused; detail names the option
   SolverFailed,             // count: pass number
   ChartsNotPacked,          // count: charts
+  NoTextureCoordinates,     // count: faces without usable texture coordinates (packing an atlas again)
   Cancelled,                // count: unused
 };
 

@@ -3,6 +3,7 @@
 #include "tool/mesh_counts.h"
 
 #include <cstdlib>
+#include <limits>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -13,9 +14,11 @@ bool read_obj(const std::string& path, ToolMesh& mesh, std::string& error) {
   std::ifstream in(path);
   if (!in) { error = "cannot open the file"; return false; }
   std::vector<vcg::Point3d> points;
+  std::vector<vcg::Point2f> uvs, corner_uv;  // the vt lines; the corners' (NaN where a face gives none)
   std::vector<int> corners;  // three per triangle, zero-based
   std::string line, word;
-  std::vector<int> polygon;
+  std::vector<int> polygon, polygon_uv;
+  const float none = std::numeric_limits<float>::quiet_NaN();
   for (long long number = 1; std::getline(in, line); ++number) {
     std::istringstream words(line);
     if (!(words >> word)) continue;
@@ -31,12 +34,20 @@ bool read_obj(const std::string& path, ToolMesh& mesh, std::string& error) {
         }
       }
       points.emplace_back(xyz[0], xyz[1], xyz[2]);
+    } else if (word == "vt") {
+      float uv[2] = {none, none};  // a malformed vt is no texture coordinate (repacking names it)
+      for (float& c : uv)
+        if (words >> word) c = std::strtof(word.c_str(), nullptr);
+      uvs.emplace_back(uv[0], uv[1]);
     } else if (word == "f") {
       polygon.clear();
+      polygon_uv.clear();
       while (words >> word) {
         char* end = nullptr;
         const long index = std::strtol(word.c_str(), &end, 10);  // "i", "i/t", "i//n", "i/t/n"
         if (end == word.c_str() || (*end != '\0' && *end != '/')) { error = where + "malformed face index '" + word + "'"; return false; }
+        const long t = *end == '/' ? std::strtol(end + 1, nullptr, 10) : 0;  // 0: none
+        polygon_uv.push_back(t > 0 && t <= long(uvs.size()) ? int(t - 1) : t < 0 && -t <= long(uvs.size()) ? int(long(uvs.size()) + t) : -1);
         const long count = long(points.size());
         const long zero_based = index > 0 ? index - 1 : count + index;  // negative: relative
         if (index == 0 || zero_based < 0 || zero_based >= count) {
@@ -46,11 +57,15 @@ bool read_obj(const std::string& path, ToolMesh& mesh, std::string& error) {
         polygon.push_back(int(zero_based));
       }
       if (polygon.size() < 3) { error = where + "a face needs at least three vertices"; return false; }
-      for (size_t k = 1; k + 1 < polygon.size(); ++k) corners.insert(corners.end(), {polygon[0], polygon[k], polygon[k + 1]});
+      for (size_t k = 1; k + 1 < polygon.size(); ++k) {
+        corners.insert(corners.end(), {polygon[0], polygon[k], polygon[k + 1]});
+        for (const size_t j : {size_t(0), k, k + 1})
+          corner_uv.push_back(polygon_uv[j] < 0 ? vcg::Point2f(none, none) : uvs[size_t(polygon_uv[j])]);
+      }
     }
   }
   if (points.empty()) { error = "no vertices"; return false; }
-  fill_tool_mesh(points, corners, mesh);
+  fill_tool_mesh(points, corners, mesh, uvs.empty() ? std::vector<vcg::Point2f>() : corner_uv);
   return true;
 }
 

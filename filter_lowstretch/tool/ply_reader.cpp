@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -164,6 +165,7 @@ struct Layout {
   const Element* face = nullptr;
   int axis_of[3] = {-1, -1, -1};  // property index of x, y, z in the vertex element
   int list_of = -1;               // property index of the vertex list in the face element
+  int texcoord_of = -1;           // ... of its texture coordinates (u, v per corner), if any
 };
 
 // Finds the layout and checks the counts against the file.
@@ -188,21 +190,24 @@ bool find_layout(const std::vector<Element>& elements, long long file_size, Layo
     for (size_t k = 0; k < l.face->properties.size(); ++k) {
       const Property& p = l.face->properties[k];
       if (p.list && p.type > 0 && (p.name == "vertex_indices" || (p.name == "vertex_index" && l.list_of < 0))) l.list_of = int(k);
+      if (p.list && p.name == "texcoord") l.texcoord_of = int(k);
     }
     if (l.list_of < 0 && l.face->count > 0) { error = "the PLY face element has no integer list vertex_indices"; return false; }
   }
   return true;
 }
 
-// One list property of one item: its values, kept in polygon when they are the face's vertices.
+// One list property of one item: its values, kept in polygon when they are the face's vertices,
+// in values if given.
 bool read_list(Body& body, const Property& p, bool indices, long long vertex_count, const std::string& what,
-               std::vector<int>& polygon, std::string& error) {
+               std::vector<int>& polygon, std::string& error, std::vector<float>* values = nullptr) {
   double count = 0, v = 0;
   if (!body.value(p.count_type, p.count_signed, count)) { error = what + "missing or malformed list count"; return false; }
   if (count < 0) { error = what + "negative list count"; return false; }
   if (indices && count < 3) { error = what + "a face needs at least three vertices"; return false; }
   for (double j = 0; j < count; ++j) {  // bounded by the file: each value is read, none reserved
     if (!body.value(p.type, p.is_signed, v)) { error = what + "the list is cut short"; return false; }
+    if (values) values->push_back(float(v));
     if (!indices) continue;
     if (!(v >= 0 && v < double(vertex_count)) || v != std::floor(v)) {
       error = what + "vertex index " + std::to_string(v) + " is out of range (0.." + std::to_string(vertex_count - 1) + ")";
@@ -215,18 +220,23 @@ bool read_list(Body& body, const Property& p, bool indices, long long vertex_cou
 
 // The body, element by element: vertex positions and faces (polygons as fans of triangles).
 bool read_body(Body& body, const std::vector<Element>& elements, const Layout& l, std::vector<vcg::Point3d>& points,
-               std::vector<int>& corners, std::string& error) {
+               std::vector<int>& corners, std::vector<vcg::Point2f>& corner_uv, std::string& error) {
   std::vector<int> polygon;
+  std::vector<float> uv;  // the face's texcoord list
+  const float none = std::numeric_limits<float>::quiet_NaN();
   points.reserve(size_t(l.vertex->count));
   for (const Element& e : elements)
     for (long long item = 0; item < e.count; ++item) {
       vcg::Point3d point(0, 0, 0);
       polygon.clear();
+      uv.clear();
       for (size_t k = 0; k < e.properties.size(); ++k) {
         const Property& p = e.properties[k];
         const std::string what = "PLY " + e.name + " " + std::to_string(item) + ", property " + p.name + ": ";
         if (p.list) {
-          if (!read_list(body, p, &e == l.face && int(k) == l.list_of, l.vertex->count, what, polygon, error)) return false;
+          const bool texcoord = &e == l.face && int(k) == l.texcoord_of;
+          if (!read_list(body, p, &e == l.face && int(k) == l.list_of, l.vertex->count, what, polygon, error, texcoord ? &uv : nullptr))
+            return false;
           continue;
         }
         double v = 0;
@@ -236,7 +246,12 @@ bool read_body(Body& body, const std::vector<Element>& elements, const Layout& l
             if (int(k) == l.axis_of[c]) point[c] = v;
       }
       if (&e == l.vertex) points.push_back(point);
-      for (size_t k = 1; k + 1 < polygon.size(); ++k) corners.insert(corners.end(), {polygon[0], polygon[k], polygon[k + 1]});
+      for (size_t k = 1; k + 1 < polygon.size(); ++k) {
+        corners.insert(corners.end(), {polygon[0], polygon[k], polygon[k + 1]});
+        if (l.texcoord_of < 0) continue;
+        for (const size_t j : {size_t(0), k, k + 1})  // a list of another length gives none
+          corner_uv.push_back(uv.size() == 2 * polygon.size() ? vcg::Point2f(uv[2 * j], uv[2 * j + 1]) : vcg::Point2f(none, none));
+      }
     }
   return true;
 }
@@ -253,8 +268,9 @@ bool read_ply(const std::string& path, long long file_size, ToolMesh& mesh, std:
   Body body(in, format);
   std::vector<vcg::Point3d> points;
   std::vector<int> corners;
-  if (!read_body(body, elements, layout, points, corners, error)) return false;
-  fill_tool_mesh(points, corners, mesh);
+  std::vector<vcg::Point2f> corner_uv;
+  if (!read_body(body, elements, layout, points, corners, corner_uv, error)) return false;
+  fill_tool_mesh(points, corners, mesh, corner_uv);
   return true;
 }
 

@@ -106,6 +106,17 @@ done
 check "no input" 1 -o "$work/out.ply"
 check "two inputs" 1 "$work/disk.off" "$work/two.off" -o "$work/out.ply"
 check "unwritable output" 4 "$work/disk.off" -o "$work/no/such/folder/out.ply"
+# The pack stage alone: an atlas the tool wrote (OBJ, PLY) packed again at another size and gutter,
+# its two charts kept; a mesh without texture coordinates refused, with what to do.
+"$tool" "$work/two.off" -o "$work/atlas.obj" >/dev/null && "$tool" "$work/two.off" -o "$work/atlas.ply" >/dev/null
+for atlas in atlas.obj atlas.ply; do
+  check "repack $atlas" 0 "$work/$atlas" --repack --texture-size 256 --gutter 8 -o "$work/out.obj" --json
+  python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["chart_count"] == 2 and d["texture_size"] == 256 and d["gutter"] == 8 and d["layout"]["flipped"] == 0 and d["layout"]["degenerate"] == 0 and list(d["stage_seconds"]) == ["charts from texture coordinates", "charts packed by outline", "valid as stored"]' "$work/stdout" \
+    && python3 -c 'import sys; uv=[tuple(map(float, l.split()[1:3])) for l in open(sys.argv[1]) if l.startswith("vt ")]; g=8/256; assert uv and all(g*(1-1e-6) <= c <= 1-g*(1-1e-6) for p in uv for c in p)' "$work/out.obj" \
+    && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL repack $atlas: json or UV outside the gutter"; }
+done
+check "repack without texture coordinates" 3 "$work/two.off" --repack -o "$work/out.obj"
+grep -q "no atlas to pack again" "$work/stderr" && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAIL repack message"; }
 # An existing output stays untouched when the input is bad.
 echo keep >"$work/keep.ply"
 "$tool" "$work/two.off" --non-disk reject -o "$work/keep.ply" 2>/dev/null

@@ -1,0 +1,155 @@
+#include "atlas/repack.h"
+
+#include <algorithm>
+#include <numeric>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "atlas/base/used_vertices.h"
+#include "atlas/charts.h"
+#include "atlas/measure/atlas_result.h"
+#include "atlas/measure/valid_as_stored.h"
+#include "core/stretch.h"
+#include "core/union_find.h"
+
+namespace lowstretch {
+
+namespace {
+
+Eigen::Vector2d uv_at(const Eigen::MatrixXd& corner_uv, Eigen::Index f, int k) { return corner_uv.block(f, 2 * k, 1, 2).transpose(); }
+
+// Indices in range, used vertices and every UV finite.
+Error check_input(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& corner_uv) {
+  if (F.rows() == 0) return {ErrorCode::NoFaces, V.rows(), ""};
+  if (corner_uv.rows() != F.rows() || corner_uv.cols() != 6) return {ErrorCode::NoTextureCoordinates, F.rows(), ""};
+  long long out_of_range = 0, non_finite = 0, without_uv = 0;
+  for (Eigen::Index f = 0; f < F.rows(); ++f) {
+    if ((F.row(f).array() < 0).any() || (F.row(f).array() >= V.rows()).any()) {
+      ++out_of_range;
+      continue;
+    }
+    for (int k = 0; k < 3; ++k) non_finite += !V.row(F(f, k)).allFinite();
+    without_uv += !corner_uv.row(f).allFinite();
+  }
+  if (out_of_range) return {ErrorCode::IndexOutOfRange, out_of_range, ""};
+  if (non_finite) return {ErrorCode::NonFiniteCoordinates, non_finite, ""};
+  if (without_uv) return {ErrorCode::NoTextureCoordinates, without_uv, ""};
+  return {};
+}
+
+// The charts: faces joined where an edge's two corners have the same UV on both sides. Each
+// chart's faces in input order, the charts in order of their first face.
+std::vector<std::vector<int>> charts_of_uv(const Eigen::MatrixXi& F, const Eigen::MatrixXd& corner_uv) {
+  std::vector<std::tuple<int, int, int, int>> edges;  // (lower vertex, higher vertex, face, corner)
+  edges.reserve(size_t(3 * F.rows()));
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = F(f, k), b = F(f, (k + 1) % 3);
+      edges.emplace_back(std::min(a, b), std::max(a, b), int(f), k);
+    }
+  std::sort(edges.begin(), edges.end());
+  const auto uv_of = [&](int f, int vertex) {
+    for (int k = 0; k < 3; ++k)
+      if (F(f, k) == vertex) return uv_at(corner_uv, f, k);
+    return Eigen::Vector2d(Eigen::Vector2d::Constant(-1));
+  };
+  UnionFind joined(int(F.rows()));
+  for (size_t first = 0, last = 0; first < edges.size(); first = last) {
+    while (last < edges.size() && std::get<0>(edges[last]) == std::get<0>(edges[first]) &&
+           std::get<1>(edges[last]) == std::get<1>(edges[first]))
+      ++last;
+    const int a = std::get<0>(edges[first]), b = std::get<1>(edges[first]);
+    for (size_t i = first; i < last; ++i)
+      for (size_t j = i + 1; j < last; ++j) {
+        const int f = std::get<2>(edges[i]), g = std::get<2>(edges[j]);
+        if (uv_of(f, a) == uv_of(g, a) && uv_of(f, b) == uv_of(g, b)) joined.unite(f, g);
+      }
+  }
+  std::vector<int> chart_of_root(size_t(F.rows()), -1);
+  std::vector<std::vector<int>> charts;
+  for (int f = 0; f < int(F.rows()); ++f) {
+    int& chart = chart_of_root[size_t(joined.find(f))];
+    if (chart < 0) chart = int(charts.size()), charts.emplace_back();
+    charts[size_t(chart)].push_back(f);
+  }
+  return charts;
+}
+
+// One chart as its UV gives it: a vertex per distinct (vertex, UV) corner, the UV its map.
+SolvedChart chart_of_uv(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& corner_uv,
+                        std::vector<int> faces) {
+  std::vector<std::tuple<int, double, double, int>> corners;  // (vertex, u, v, 3 * local face + k)
+  for (size_t j = 0; j < faces.size(); ++j)
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector2d uv = uv_at(corner_uv, faces[j], k);
+      corners.emplace_back(F(faces[j], k), uv.x(), uv.y(), int(3 * j) + k);
+    }
+  std::sort(corners.begin(), corners.end());
+  SolvedChart chart;
+  ChartMesh& mesh = chart.mesh;
+  mesh.F.resize(Eigen::Index(faces.size()), 3);
+  std::vector<int> vertex;
+  std::vector<Eigen::Vector2d> uv;
+  for (size_t i = 0; i < corners.size(); ++i) {
+    const int v = std::get<0>(corners[i]), corner = std::get<3>(corners[i]);
+    const Eigen::Vector2d at(std::get<1>(corners[i]), std::get<2>(corners[i]));
+    if (vertex.empty() || v != vertex.back() || at != uv.back()) {
+      vertex.push_back(v);
+      uv.push_back(at);
+    }
+    mesh.F(corner / 3, corner % 3) = int(vertex.size()) - 1;
+  }
+  mesh.V.resize(Eigen::Index(vertex.size()), 3);
+  chart.map.uv.resize(Eigen::Index(vertex.size()), 2);
+  for (size_t i = 0; i < vertex.size(); ++i) {
+    mesh.V.row(Eigen::Index(i)) = unit_V.row(vertex[i]);
+    chart.map.uv.row(Eigen::Index(i)) = uv[i].transpose();
+  }
+  mesh.input_face = faces;
+  chart.faces = std::move(faces);
+  chart.free_boundary = true;  // its own outline, as given
+  chart.kept_whole = "its texture coordinates were given";
+  chart.fit_box();
+  chart.kept = measure_real_faces(mesh, chart.map.uv);
+  chart.passes = {chart.kept};
+  return chart;
+}
+
+}  // namespace
+
+ChartsResult repack_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& corner_uv,
+                          const ChartOptions& options) {
+  const Clock::time_point start = Clock::now();
+  if (Error e = check_chart_options(options)) return failed_result(e);
+  if (Error e = check_input(V, F, corner_uv)) return failed_result(e);
+  double unit = 1;
+  const Eigen::MatrixXd unit_V = unit_box_of_used(V, F, unit);
+  std::vector<SolvedChart> charts;
+  std::vector<int> flat;  // faces of charts with no 3D area: each chart on a point
+  long long collapsed = 0;  // faces of charts with 3D area but none in UV: no shape to keep
+  for (std::vector<int>& faces : charts_of_uv(F, corner_uv)) {
+    SolvedChart chart = chart_of_uv(unit_V, F, corner_uv, std::move(faces));
+    if (!(chart.kept.area_3d > 0)) flat.insert(flat.end(), chart.faces.begin(), chart.faces.end());
+    else if (chart.uv_area() > 0) charts.push_back(std::move(chart));
+    else collapsed += (long long)chart.faces.size();
+  }
+  if (collapsed > 0 || charts.empty()) return failed_result({ErrorCode::NoTextureCoordinates, collapsed, ""});
+  std::vector<StageSeconds> stages = {{"charts from texture coordinates", seconds_since(start)}};
+  Clock::time_point stage = Clock::now();
+  std::vector<int> all(charts.size());
+  std::iota(all.begin(), all.end(), 0);
+  const size_t chart_count = charts.size();
+  ChartsResult result = atlas_of(std::move(charts), std::move(all), unit_V, F, unit, int(V.rows()), options, std::move(flat));
+  if (result.error) return result;
+  stages.push_back({"charts packed by outline", seconds_since(stage)});
+  result.notes.insert(result.notes.begin(), std::to_string(chart_count) + " charts read from the texture coordinates packed again");
+  stage = Clock::now();
+  result = valid_as_stored(unit_V, F, unit, int(V.rows()), options, std::move(result));
+  stages.push_back({"valid as stored", seconds_since(stage)});
+  result.stage_seconds = std::move(stages);
+  result.seconds_total = seconds_since(start);
+  return result;
+}
+
+}  // namespace lowstretch

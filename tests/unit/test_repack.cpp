@@ -1,0 +1,136 @@
+// The pack stage alone (repack_atlas): an atlas packed again at another texture size and gutter
+// keeps its charts, each moved by a similarity (a quarter turn, a scale, a shift), and is valid
+// with the new gutter; input that holds no atlas is refused with a message.
+#include <gtest/gtest.h>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <vector>
+
+#include "atlas/charts.h"
+#include "atlas/repack.h"
+#include "generated_meshes.h"
+#include "layout_checks.h"
+
+using namespace lowstretch;
+
+namespace {
+
+// Closed and open parts: charts of several shapes.
+testmesh::Mesh parts() {
+  testmesh::Mesh m = testmesh::torus(16, 8);
+  m = testmesh::joined(m, testmesh::hemisphere(6, 12), 0.7, Eigen::RowVector3d(4, 0, 0));
+  return testmesh::joined(m, testmesh::punched_grid(10, {{0.5, 0.5}}, 0.2), 1.5, Eigen::RowVector3d(8, 0, 0));
+}
+
+ChartOptions other_texture() {
+  ChartOptions options;
+  options.texture_size = 512;
+  options.gutter = 4;  // a wider share of the texture than the default's 2 of 1024
+  return options;
+}
+
+// Whether every corner of chart `c` of `after` is where a similarity (rotation by a multiple of a
+// quarter turn, uniform scale, shift) puts it from `before`, to float rounding.
+void expect_same_shape(const testmesh::Mesh& m, const ChartsResult& before, const ChartsResult& after, int c) {
+  std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> corners;  // (before, after)
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+    if (after.face_chart[size_t(f)] == c)
+      for (int k = 0; k < 3; ++k) corners.push_back({corner(before, f, k), corner(after, f, k)});
+  ASSERT_FALSE(corners.empty());
+  // The scale and turn from the corner farthest from the first.
+  size_t far = 0;
+  for (size_t i = 1; i < corners.size(); ++i)
+    if ((corners[i].first - corners[0].first).norm() > (corners[far].first - corners[0].first).norm()) far = i;
+  const Eigen::Vector2d from = corners[far].first - corners[0].first, to = corners[far].second - corners[0].second;
+  ASSERT_GT(from.norm(), 0);
+  const double scale = to.norm() / from.norm();
+  const double turn = std::atan2(to.y(), to.x()) - std::atan2(from.y(), from.x());
+  const double quarters = turn / (M_PI / 2);
+  EXPECT_NEAR(quarters, std::round(quarters), 1e-3) << "chart " << c << " turned by " << turn;
+  const Eigen::Rotation2Dd rotate(std::round(quarters) * M_PI / 2);
+  for (const auto& p : corners) {
+    const Eigen::Vector2d expected = corners[0].second + scale * (rotate * (p.first - corners[0].first));
+    EXPECT_LT((p.second - expected).norm(), 1e-5) << "chart " << c;
+  }
+}
+
+}  // namespace
+
+TEST(Repack, EachChartKeepsItsShapeAndTheNewGutter) {
+  const testmesh::Mesh m = parts();
+  const ChartsResult before = parameterize_charts(m.V, m.F, ChartOptions());
+  ASSERT_FALSE(before.error) << message(before.error);
+  ASSERT_GT(before.charts.size(), 3u);
+  const ChartOptions options = other_texture();
+  const ChartsResult after = repack_atlas(m.V, m.F, before.corner_uv, options);
+  ASSERT_FALSE(after.error) << message(after.error);
+  expect_valid_layout(m.F, after, &m.V);
+  // The same charts: faces together before are together after, and apart before, apart after.
+  ASSERT_EQ(after.charts.size(), before.charts.size());
+  std::map<int, int> chart_after;
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f) {
+    const auto found = chart_after.emplace(before.face_chart[size_t(f)], after.face_chart[size_t(f)]).first;
+    EXPECT_EQ(found->second, after.face_chart[size_t(f)]) << "face " << f;
+  }
+  EXPECT_EQ(chart_after.size(), before.charts.size());
+  for (int c = 0; c < int(after.charts.size()); ++c) expect_same_shape(m, before, after, c);
+  // One texel density for all, and the new gutter between charts and to the border.
+  const std::vector<double> density = texel_densities(m.V, m.F, after);
+  for (const double d : density) EXPECT_NEAR(d / density[0], 1.0, 1e-4);
+  const double g = options.gutter / options.texture_size;
+  EXPECT_GE(least_distance_between_charts(m.F, after), g * (1 - 1e-5));
+  EXPECT_GE(after.corner_uv.minCoeff(), g * (1 - 1e-6));
+  EXPECT_LE(after.corner_uv.maxCoeff(), 1 - g * (1 - 1e-6));
+  // Packed again with the options it was made with, the atlas is as tight as the one packed.
+  const ChartsResult again = repack_atlas(m.V, m.F, after.corner_uv, options);
+  ASSERT_FALSE(again.error);
+  EXPECT_NEAR(again.coverage, after.coverage, 0.02 * after.coverage);
+}
+
+// A face whose UV folds is cut out and mapped again: the result is valid whatever it is given.
+TEST(Repack, AFoldedFaceIsMappedAgain) {
+  const testmesh::Mesh m = parts();
+  ChartsResult before = parameterize_charts(m.V, m.F, ChartOptions());
+  ASSERT_FALSE(before.error);
+  const Eigen::Vector2d a = corner(before, 5, 0);
+  before.corner_uv.block(5, 0, 1, 2) = corner(before, 5, 1).transpose();  // face 5 folded onto a line
+  before.corner_uv.block(5, 2, 1, 2) = a.transpose();
+  ASSERT_LT(signed_area(corner(before, 5, 0), corner(before, 5, 1), corner(before, 5, 2)), 0);
+  const ChartsResult after = repack_atlas(m.V, m.F, before.corner_uv, ChartOptions());
+  ASSERT_FALSE(after.error) << message(after.error);
+  expect_valid_layout(m.F, after, &m.V);
+}
+
+// No texture coordinates, NaN ones, or charts with 3D area and none in UV: refused, with what to do.
+TEST(Repack, InputWithoutAnAtlasIsRefusedWithAMessage) {
+  const testmesh::Mesh m = parts();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const Eigen::MatrixXd none = Eigen::MatrixXd::Constant(m.F.rows(), 6, nan), zero = Eigen::MatrixXd::Zero(m.F.rows(), 6);
+  for (const Eigen::MatrixXd* uv : {&none, &zero}) {
+    const ChartsResult r = repack_atlas(m.V, m.F, *uv, ChartOptions());
+    EXPECT_EQ(r.error.code, ErrorCode::NoTextureCoordinates);
+    EXPECT_EQ(r.error.count, m.F.rows());
+    EXPECT_NE(message(r.error).find("parameterize the mesh first"), std::string::npos) << message(r.error);
+  }
+  EXPECT_EQ(repack_atlas(m.V, m.F, Eigen::MatrixXd(), ChartOptions()).error.code, ErrorCode::NoTextureCoordinates);
+  ChartOptions bad;
+  bad.gutter = 0;
+  EXPECT_EQ(repack_atlas(m.V, m.F, zero, bad).error.code, ErrorCode::InvalidOption);
+}
+
+// A part of no 3D area has nothing to texture: it sits on a point, the rest is packed.
+TEST(Repack, APartOfNoAreaSitsOnAPoint) {
+  testmesh::Mesh m = parts();
+  const Eigen::Index n = m.V.rows(), faces = m.F.rows();
+  m.V.conservativeResize(n + 3, 3);
+  m.V.bottomRows(3) << 20, 0, 0, 21, 0, 0, 22, 0, 0;  // on a line
+  m.F.conservativeResize(faces + 1, 3);
+  m.F.row(faces) << int(n), int(n + 1), int(n + 2);
+  const ChartsResult before = parameterize_charts(m.V, m.F, ChartOptions());
+  ASSERT_FALSE(before.error) << message(before.error);
+  const ChartsResult after = repack_atlas(m.V, m.F, before.corner_uv, other_texture());
+  ASSERT_FALSE(after.error) << message(after.error);
+  EXPECT_EQ(signed_area(corner(after, faces, 0), corner(after, faces, 1), corner(after, faces, 2)), 0);
+  expect_valid_layout(m.F, after, &m.V);
+}
