@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "atlas/charts.h"
+#include "atlas/repack.h"
 #include "core/errors.h"
 #include "core/parameterize.h"
 #include "plugin_common/one_blas_thread.h"
@@ -113,7 +114,7 @@ Run run(const MeshType& m, const ChartOptions& options, const std::function<void
   run.rows = mesh_to_arrays(m, V, F);
   const OneBlasThread one_blas_thread;
   try {
-    run.result = parameterize_charts(V, F, options);
+    run.result = options.repack ? repack_atlas(V, F, wedge_texcoords(m, run.rows), options) : parameterize_charts(V, F, options);
   } catch (const std::exception& e) {  // e.g. std::bad_alloc: never let it reach MeshLab's event loop
     run.error = std::string("internal error: ") + e.what();
     return run;

@@ -64,6 +64,11 @@ std::vector<OptionRow> make_table() {
        "Every texture coordinate stays this many texels inside the border of the texture, and charts this far "
        "apart, so that baking and mipmaps never address a texel outside it.",
        [](const ChartOptions& o) { return o.gutter; }, [](ChartOptions& o, double v) { o.gutter = v; }},
+      {"repack", "--repack", "repackOnly", "Pack again only", OptionKind::Switch, {}, {}, "", kToolAndFilter,
+       "Keep the mesh's atlas (its per-wedge texture coordinates, from an earlier run or a file) and only pack "
+       "its charts again for Texture size and Gutter: each chart keeps its shape, turned by quarter turns and "
+       "scaled to one texel density, packed by its outline. The options for cutting and mapping are not used.",
+       [](const ChartOptions& o) { return double(o.repack); }, [](ChartOptions& o, double v) { o.repack = v != 0; }},
       {"refine", "--refine", "refineStretch", "Refine stretch", OptionKind::Switch, {}, {}, "", kToolAndFilter,
        "After the paper's passes, lower the L2 stretch further by minimizing it directly (projected Newton, "
        "no triangle flips; the boundary stays, but for an atlas's free charts), for at most 25 steps (the tool's "

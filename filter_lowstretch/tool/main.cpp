@@ -40,7 +40,6 @@ enum Exit { kDone = 0, kBadArguments = 1, kUnreadable = 2, kRejected = 3, kCanno
 struct Arguments {
   std::string input, output, svg;
   bool json = false;
-  bool repack = false;
   ChartOptions charts;
 };
 
@@ -50,9 +49,6 @@ void describe_arguments(CLI::App& app, Arguments& a) {
   app.add_option("-o,--output", a.output, "write the mesh with texture coordinates (.obj or .ply)");
   app.add_option("--svg", a.svg, "draw the texture coordinates coloured by stretch");
   app.add_flag("--json", a.json, "print the metrics as JSON");
-  app.add_flag("--repack", a.repack,
-               "pack the input's atlas (its per-corner texture coordinates, OBJ or PLY) again at --texture-size and "
-               "--gutter, its charts kept as they are");
   CLI::Option* non_disk = nullptr;
   for (const OptionRow& row : option_table()) {
     ChartOptions& options = a.charts;
@@ -208,14 +204,7 @@ int main(int argc, char** argv) {
   Eigen::MatrixXd V;
   Eigen::MatrixXi F;
   const ArrayRows rows = mesh_to_arrays(mesh, V, F);
-  Eigen::MatrixXd corner_uv;  // the atlas to pack again (the readers keep every face, in order)
-  if (args.repack) {
-    corner_uv.resize(F.rows(), 6);
-    for (Eigen::Index f = 0; f < F.rows(); ++f)
-      for (int k = 0; k < 3; ++k)
-        corner_uv.block(f, 2 * k, 1, 2) << mesh.face[size_t(rows.face_index[size_t(f)])].cWT(k).U(),
-            mesh.face[size_t(rows.face_index[size_t(f)])].cWT(k).V();
-  }
+  const Eigen::MatrixXd corner_uv = args.charts.repack ? wedge_texcoords(mesh, rows) : Eigen::MatrixXd();
   // The readers make every vertex and face live, so V and F hold the whole mesh: it is made again
   // from them for writing, and held no memory during the run (430 MB at 2M vertices).
   std::vector<ToolVertex>().swap(mesh.vert);
@@ -224,7 +213,7 @@ int main(int argc, char** argv) {
 
   // The atlas solves charts on both cores, where OpenBLAS's own threads would only spin.
   const OneBlasThread one_blas_thread;
-  const ChartsResult result = args.repack ? repack_atlas(V, F, corner_uv, args.charts) : parameterize_charts(V, F, args.charts);
+  const ChartsResult result = args.charts.repack ? repack_atlas(V, F, corner_uv, args.charts) : parameterize_charts(V, F, args.charts);
   if (result.error) {
     // An option value that the core refuses is a bad argument, as the usage says.
     if (result.error.code == ErrorCode::InvalidOption) {

@@ -3,6 +3,7 @@
 // rows are made only of live elements, and the maps below say which element each row came from.
 #pragma once
 #include <Eigen/Core>
+#include <limits>
 #include <vector>
 
 #include <vcg/complex/complex.h>
@@ -46,6 +47,20 @@ ArrayRows mesh_to_arrays(const MeshType& m, Eigen::MatrixXd& V, Eigen::MatrixXi&
     }
   }
   return rows;
+}
+
+// The per-wedge texcoords of the faces of `rows` (#F x 6, corners 0, 1, 2), NaN where the mesh has
+// none: the atlas to pack again (repack.h).
+template <class MeshType>
+Eigen::MatrixXd wedge_texcoords(const MeshType& m, const ArrayRows& rows) {
+  Eigen::MatrixXd uv = Eigen::MatrixXd::Constant(Eigen::Index(rows.face_index.size()), 6, std::numeric_limits<double>::quiet_NaN());
+  if (!vcg::tri::HasPerWedgeTexCoord(m)) return uv;
+  for (size_t r = 0; r < rows.face_index.size(); ++r)
+    for (int k = 0; k < 3; ++k) {
+      const auto& t = m.face[size_t(rows.face_index[r])].cWT(k);
+      uv.block(Eigen::Index(r), 2 * k, 1, 2) << double(t.U()), double(t.V());
+    }
+  return uv;
 }
 
 // Writes the result into components the caller has made available: per-wedge texcoords

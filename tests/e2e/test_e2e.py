@@ -16,7 +16,8 @@ meshlabserver, saves after a failing filter) shows the mesh and its data masks u
 test_charts[MESH]: a non-disk with "Non-disk input: Make charts" gets a valid atlas, the tool's.
 test_deleted_elements: vertices and faces deleted (not compacted) by earlier filters in the same
 script give exactly the result of the mesh without them. test_second_run_replaces: Circle then
-Square in one script gives exactly Square alone. Meshes: generated, Debian's CGAL demo meshes
+Square in one script gives exactly Square alone. test_repack: "Pack again only" after the atlas in
+one script keeps its charts, at another texture size and gutter. Meshes: generated, Debian's CGAL demo meshes
 (--cgal-meshes) and the shared ones when --shared-meshes exists. Each test works in its tmp_path.
 """
 import json
@@ -373,3 +374,67 @@ def test_second_run_replaces(args):
     assert runs == {"circle", "square"}, f"the script ran the filter with both boundaries: {sorted(runs)}"
     assert proc.returncode == 0 and os.path.isfile(out_twice), "the second run succeeds"
     check_same_output(meshio.read_ply(out_twice), reference, "after Circle then Square as after Square alone")
+
+
+def uv_charts(faces, triangles):
+    """Each face's chart, numbered by first face: faces joined where an edge's two corners have the
+    same texcoords on both sides (as the filter's "Pack again only" reads charts)."""
+    parent = list(range(len(faces)))
+
+    def find(x):
+        while parent[x] != x:
+            parent[x] = parent[parent[x]]
+            x = parent[x]
+        return x
+
+    sides = {}
+    for f, (face, uv) in enumerate(zip(faces, triangles)):
+        for k in range(3):
+            a, b = face[k], face[(k + 1) % 3]
+            key, pair = (min(a, b), max(a, b)), (uv[k], uv[(k + 1) % 3]) if a < b else (uv[(k + 1) % 3], uv[k])
+            for g, other in sides.get(key, []):
+                if other == pair:
+                    parent[find(f)] = find(g)
+            sides.setdefault(key, []).append((f, pair))
+    number = {}
+    return [number.setdefault(find(f), len(number)) for f in range(len(faces))]
+
+
+def test_repack(args):
+    """The filter, then the filter with "Pack again only", 256 texels and an 8-texel gutter, in one
+    meshlabserver script: the log says the charts were read and packed again, the saved PLY holds
+    the charts of the filter alone, 8 texels of 256 inside [0,1]^2, no flipped or zero-area UV
+    triangle."""
+    shutil.rmtree(args.work, ignore_errors=True)
+    os.makedirs(args.work)
+    vertices, faces = generate.NON_DISKS["sphere"]()
+    mesh = os.path.join(args.work, "sphere.off")
+    meshio.write_off(mesh, vertices, faces)
+    script = ET.Element("FilterScript")
+    script.append(ET.parse(mlx(args)).getroot().find("filter"))
+    repack = ET.parse(mlx(args)).getroot().find("filter")
+    for name, value in (("repackOnly", "true"), ("textureSize", "256"), ("gutter", "8")):
+        repack.find(f"Param[@name='{name}']").set("value", value)
+    script.append(repack)
+    script_path = os.path.join(args.work, "script.mlx")
+    ET.ElementTree(script).write(script_path)
+    runs = {}
+    for name, path in (("reference", mlx(args)), ("script", script_path)):
+        out = os.path.join(args.work, name + "_out.ply")
+        proc = meshlabserver(args.prefix, args.work, name + ".log", ["-i", mesh, "-o", out, "-m", "wt", "-s", path])
+        assert proc.returncode == 0 and os.path.isfile(out), f"the {name} run succeeds (exit code {proc.returncode})"
+        runs[name] = proc
+    reference = meshio.read_ply(os.path.join(args.work, "reference_out.ply"))
+    proc = runs["script"]
+    assert re.search(r"\d+ charts read from the texture coordinates packed again", proc.stdout), "the log says so"
+    result = meshio.read_ply(out)
+
+    def triangles(ply):
+        return [((t[0], t[1]), (t[2], t[3]), (t[4], t[5])) for t in ply.elements["face"].data["texcoord"]]
+
+    assert uv_charts(result.faces(), triangles(result)) == uv_charts(reference.faces(), triangles(reference)), \
+        "the same charts as the filter alone"
+    g = 8 / 256
+    uv = [c for t in triangles(result) for p in t for c in p]
+    assert g - 1e-6 <= min(uv) and max(uv) <= 1 - g + 1e-6, f"8 texels of 256 inside ({min(uv)}, {max(uv)})"
+    assert all(signed_area(*t) > 0 for t in triangles(result)), "no flipped or zero-area UV triangle"

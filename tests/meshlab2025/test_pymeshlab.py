@@ -11,6 +11,8 @@ pytest there), applies the filter and writes what it measured; the pytest tests 
     Circle boundary works too, and refinestretch=True lowers the stretch without a flip;
   - on a mesh that is not a disk (head.off) it raises PyMeshLabException with the core's message
     in disk-only mode, and the mesh is unchanged; by default it gets charts; the atlas mode cuts;
+    repackonly=True packs that atlas again at another size and gutter, its charts kept, and
+    raises on a mesh without texcoords;
   - with --readme: the README's Python snippet (the ```python block that calls
     pymeshlab.load_plugin), run as written from a folder whose build/ is this build tree.
 
@@ -75,6 +77,32 @@ def texcoord_facts(np, m):
     return {"has": True, "shape": list(wtc.shape), "faces": len(F), "min": float(wtc.min()), "max": float(wtc.max()),
             "flipped": int((area_u < 0).sum()), "zero": int((area_u == 0).sum()),
             "non_positive": int((area_u <= 0).sum()), "l2": l2}, (sigma, area)
+
+
+def uv_charts(F, wedge_uv):
+    """Each face's chart, numbered by first face: faces joined where an edge's two corners have the
+    same texcoords on both sides (as repack_atlas reads charts)."""
+    parent = list(range(len(F)))
+
+    def find(x):
+        while parent[x] != x:
+            parent[x] = parent[parent[x]]
+            x = parent[x]
+        return x
+
+    sides = {}
+    for f, face in enumerate(F.tolist()):
+        for k in range(3):
+            a, b = face[k], face[(k + 1) % 3]
+            uv_a, uv_b = tuple(wedge_uv[3 * f + k]), tuple(wedge_uv[3 * f + (k + 1) % 3])
+            key = (min(a, b), max(a, b))
+            uv = (uv_a, uv_b) if a < b else (uv_b, uv_a)
+            for g, other in sides.get(key, []):
+                if other == uv:
+                    parent[find(f)] = find(g)
+            sides.setdefault(key, []).append((f, uv))
+    number = {}
+    return [number.setdefault(find(f), len(number)) for f in range(len(F))]
 
 
 def inside(args):
@@ -145,6 +173,19 @@ def inside(args):
     ms.load_new_mesh(args.disk)
     facts["atlas"] = ms.apply_filter(NAME, nondisk="Atlas for any mesh", maxstretch=1.1, texturesize=512, gutter=3)
     facts["atlas_uv"] = texcoord_facts(np, ms.current_mesh())[0]
+    # The pack stage alone: that atlas packed again for 2048 texels and an 8-texel gutter.
+    F = ms.current_mesh().face_matrix()
+    atlas_charts = uv_charts(F, ms.current_mesh().wedge_tex_coord_matrix().tolist())
+    facts["repacked"] = ms.apply_filter(NAME, repackonly=True, texturesize=2048, gutter=8)
+    facts["repacked_uv"] = texcoord_facts(np, ms.current_mesh())[0]
+    facts["repacked_same_charts"] = uv_charts(F, ms.current_mesh().wedge_tex_coord_matrix().tolist()) == atlas_charts
+    ms.load_new_mesh(args.disk)  # no texcoords: nothing to pack again
+    try:
+        ms.apply_filter(NAME, repackonly=True)
+        facts["repack_raised"] = None
+    except pymeshlab.PyMeshLabException as e:
+        facts["repack_raised"] = str(e)
+    facts["repack_refused_has_wedge"] = ms.current_mesh().has_wedge_tex_coord()
     with open(args.output, "w") as f:
         json.dump(facts, f, indent=1)
 
@@ -332,6 +373,21 @@ def test_atlas(facts):
     assert uv["min"] >= 3 / 512 - 1e-6 and uv["max"] <= 1 - 3 / 512 + 1e-6 and uv["non_positive"] == 0, (
         f"the atlas stays 3 texels of 512 inside [0,1]^2 ({uv['min']:.6g}, {uv['max']:.6g}), no flipped or "
         f"zero-area triangle")
+
+
+def test_repack(facts):
+    """The pack stage alone (repackonly=True): the disk's atlas packed again for 2048 texels and an
+    8-texel gutter keeps its charts, stays 8 texels inside, no flipped triangle; a mesh without
+    texcoords raises with what to do and stays without."""
+    atlas, repacked, uv = facts["atlas"], facts["repacked"], facts["repacked_uv"]
+    assert repacked["charts"] == atlas["charts"] and facts["repacked_same_charts"], (
+        f"the same charts: {repacked['charts']} of {atlas['charts']}, same faces in each: {facts['repacked_same_charts']}")
+    assert uv["min"] >= 8 / 2048 - 1e-6 and uv["max"] <= 1 - 8 / 2048 + 1e-6 and uv["non_positive"] == 0, (
+        f"8 texels of 2048 inside [0,1]^2 ({uv['min']:.6g}, {uv['max']:.6g}), no flipped or zero-area triangle")
+    assert abs(uv["l2"] - repacked["l2_stretch"]) <= 1e-9 * uv["l2"], "the returned L2 stretch is the stored map's"
+    raised = facts["repack_raised"]
+    assert raised is not None and "no atlas to pack again" in raised and not facts["repack_refused_has_wedge"], (
+        f"a mesh without texcoords raises and is unchanged: {raised}")
 
 
 def test_readme_snippet(request, python, tmp_path):

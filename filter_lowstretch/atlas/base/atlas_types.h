@@ -38,6 +38,9 @@ struct ChartOptions {
   // unmerged atlas's, by default or with fewer_seams.
   double min_efficiency = 0;           // 0 to 1
   bool fewer_seams = false;
+  // Keep the atlas the mesh has (its per-corner texture coordinates) and pack its charts again for
+  // texture_size and gutter (repack.h); the options above are not used.
+  bool repack = false;
 };
 
 struct Chart {
