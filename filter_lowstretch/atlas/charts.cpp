@@ -11,6 +11,7 @@
 #include "atlas/cut/weld_duplicates.h"
 #include "atlas/cut/zero_area_parts.h"
 #include "atlas/measure/atlas_result.h"
+#include "atlas/measure/least_gutter.h"
 #include "atlas/measure/valid_as_stored.h"
 #include "atlas/search/make_atlas.h"
 #include "core/disk_mesh.h"
@@ -234,6 +235,12 @@ ChartsResult disk_or_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, c
 
 }  // namespace
 
+void measure_gutter(const ChartOptions& options, ChartsResult& result) {
+  if (result.error) return;
+  const double texel = 1.0 / options.texture_size;
+  result.least_gutter = least_gutter(result.corner_uv, result.face_chart, 2 * options.gutter * texel) / texel;
+}
+
 bool charts_would_help(ErrorCode code) { return cutting_into_disks_fixes(code) || manifold_copy_helps(code); }
 
 ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options) {
@@ -247,6 +254,7 @@ ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi
   result.stage_seconds.insert(result.stage_seconds.begin(), {"input and whole map", std::max(0.0, result.seconds_total - in_stages)});
   const Clock::time_point start = Clock::now();
   result = valid_as_stored(unit_V, F, unit, int(V.rows()), options, std::move(result));
+  measure_gutter(options, result);
   result.stage_seconds.push_back({"valid as stored", seconds_since(start)});
   result.seconds_total += result.stage_seconds.back().seconds;
   return result;

@@ -27,6 +27,9 @@ namespace lowstretch {
 // non-manifold or non-orientable input stays an error.
 ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options);
 
+// result.least_gutter of a valid result, looked for up to twice options.gutter.
+void measure_gutter(const ChartOptions& options, ChartsResult& result);
+
 // The options' values in range (InvalidOption names the first that is not).
 Error check_chart_options(const ChartOptions& options);
 

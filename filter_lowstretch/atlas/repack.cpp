@@ -146,6 +146,7 @@ ChartsResult repack_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, co
   result.notes.insert(result.notes.begin(), std::to_string(chart_count) + " charts read from the texture coordinates packed again");
   stage = Clock::now();
   result = valid_as_stored(unit_V, F, unit, int(V.rows()), options, std::move(result));
+  measure_gutter(options, result);
   stages.push_back({"valid as stored", seconds_since(stage)});
   result.stage_seconds = std::move(stages);
   result.seconds_total = seconds_since(start);

@@ -26,8 +26,10 @@ std::string solver_text(const PassMetrics& p) {
 std::string stored_line(const ChartsResult& result) {
   const PassMetrics& p = result.layout;
   return format("texture coordinates as stored (float): L2 stretch %.6g, Linf stretch %.6g, flipped %d, degenerate %d, "
-                "coverage %.4f; %d UV triangles smaller than a texel of a 4096x4096 texture",
-                p.l2_stretch, p.linf_stretch, p.flipped, p.degenerate, result.coverage, result.subtexel_triangles);
+                "coverage %.4f; %d UV triangles smaller than a texel of a 4096x4096 texture; charts %.4g texels or more "
+                "apart and from the border",
+                p.l2_stretch, p.linf_stretch, p.flipped, p.degenerate, result.coverage, result.subtexel_triangles,
+                result.least_gutter);
 }
 
 std::vector<std::string> disk_lines(const ChartsResult& result) {

@@ -5,7 +5,8 @@ ball pivoting, VCG and screened Poisson reconstructions and marching cubes on a 
 distance of it (run by --scan-python, a Python with numpy, pymeshlab and scikit-image). For each
 file (test_atlas[NAME]; test_fewer_seams_atlas adds --fewer-seams on two defects and on ball
 pivoting) `lowstretch FILE -o out.obj --json` must exit 0, write every input face with texture
-coordinates inside the gutter, and leave no flipped UV triangle and no zero-area one on a face with
+coordinates inside the gutter, keep charts a gutter apart (the JSON's least_gutter), and leave no
+flipped UV triangle and no zero-area one on a face with
 3D area (a face of zero 3D area may have zero UV area, never a negative one), as read back from
 the OBJ and as MeshLab's ASCII PLY writer would print it (each coordinate, a float, with 6
 decimals); TestPointSets: the same on CGAL's real scanner point sets reconstructed by MeshLab
@@ -94,9 +95,12 @@ def check_atlas(tool, path, work, options=()):
     out = os.path.join(work, name[:-4] + "".join(options) + ".obj")
     proc = subprocess.run([tool, path, "-o", out, "--json", *options], capture_output=True, text=True, timeout=900)
     assert proc.returncode == 0, f"{name}: exit 0 ({proc.returncode}: {proc.stderr.strip()[:200]})"
-    layout = json.loads(proc.stdout)["layout"]
+    result = json.loads(proc.stdout)
+    layout = result["layout"]
     assert layout["flipped"] == 0 and layout["degenerate"] == 0, \
         f"{name}: the JSON counts no flipped or zero-area triangle ({layout['flipped']}, {layout['degenerate']})"
+    assert result["least_gutter"] >= result["gutter"] * (1 - 1e-4), \
+        f"{name}: charts a gutter ({result['gutter']} texels) apart and from the border ({result['least_gutter']:.4g})"
     in_vertices, in_faces = meshio.read_off(path)
     _, faces, corners = meshio.read_obj_with_texcoords(out)
     corner_uv = [corners[3 * f:3 * f + 3] for f in range(len(faces))]

@@ -108,7 +108,8 @@ def check_outputs(proc):
                 "angle_distortion": "double", "area_distortion": "double", "flipped": "int", "degenerate": "int",
                 "kept_pass": "int", "passes": "int", "initial_l2_stretch": "double", "seconds": "double",
                 "charts": "int", "seam_length": "double", "coverage": "double", "efficiency": "double",
-                "max_chart_stretch": "double", "subtexel_triangles": "int", "float_collapsed": "int"}
+                "max_chart_stretch": "double", "least_gutter": "double", "subtexel_triangles": "int",
+                "float_collapsed": "int"}
     assert {k: t for k, (v, t) in outputs.items()} == expected, \
         f"applyFilter returns the output values {sorted(expected)} with their types"
     passes, kept = e2e.parse_log(proc.stdout)

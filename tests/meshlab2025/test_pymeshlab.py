@@ -39,7 +39,7 @@ GUTTER = 2 / 1024  # the default gutter (texels) over the default texture size: 
 KEYS = {"l2_stretch": float, "linf_stretch": float, "edge_distortion": float, "angle_distortion": float,
         "area_distortion": float, "flipped": int, "degenerate": int, "kept_pass": int, "passes": int,
         "initial_l2_stretch": float, "seconds": float, "charts": int, "seam_length": float, "coverage": float,
-        "efficiency": float, "max_chart_stretch": float, "subtexel_triangles": int,
+        "efficiency": float, "max_chart_stretch": float, "least_gutter": float, "subtexel_triangles": int,
         "float_collapsed": int}
 DISK, BAD, EXPECT = "mannequin-devil.off", "head.off", "3 boundary loops"  # in --cgal-meshes
 # How the atlas of BAD is saved: name, file, binary (None: OBJ).

@@ -10,6 +10,7 @@
 
 #include "atlas/bound/cut_invalid_charts.h"
 #include "atlas/charts.h"
+#include "atlas/measure/least_gutter.h"
 #include "atlas/measure/valid_as_stored.h"
 #include "generated_meshes.h"
 #include "layout_checks.h"
@@ -280,6 +281,23 @@ TEST(ValidAsStored, AFaceMovedAloneGoesIntoFreeTexelsAndTheRestKeepsItsPlaceAndG
   // The face alone keeps the gutter from every other face.
   EXPECT_GE(nearest_other_face(fixed, collapsed), options.gutter / options.texture_size * (1 - 1e-6));
   EXPECT_EQ(fixed.charts.size(), r.charts.size() + 1);
+}
+
+// Hundreds of faces moved alone (a real scan's Poisson reconstruction had 249): the strip's cells
+// stay wide enough for half a gutter on each side, so the faces keep a gutter between them too.
+TEST(ValidAsStored, ManyFacesInTheStripKeepAGutterBetweenThem) {
+  const testmesh::Mesh m = testmesh::grid(150);
+  const ChartOptions options;
+  ChartsResult r = parameterize_charts(m.V, m.F, options);
+  ASSERT_FALSE(r.error);
+  for (Eigen::Index collapsed = 7; collapsed < m.F.rows(); collapsed += 151)
+    for (int k = 1; k < 3; ++k) r.corner_uv.block(collapsed, 2 * k, 1, 2) = r.corner_uv.block(collapsed, 0, 1, 2);
+  const ChartsResult fixed = valid_as_stored(in_unit_box(m.V), m.F, 1, int(m.V.rows()), options, r);
+  ASSERT_FALSE(fixed.error);
+  ASSERT_GT(fixed.charts.size(), 250u);
+  expect_valid_layout(m.F, fixed, &m.V);
+  const double g = options.gutter / options.texture_size;
+  EXPECT_GE(least_gutter(fixed.corner_uv, fixed.face_chart, 2 * g), g * (1 - 1e-6));
 }
 
 TEST(ValidAsStored, WithNoFreeTexelsTheStripKeepsTheGutterFromTheDiskBelow) {

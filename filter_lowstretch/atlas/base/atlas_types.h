@@ -85,6 +85,9 @@ struct ChartsResult {
   std::vector<LayoutPass> passes;         // L2 stretch and flips of every pass, whole mesh
   double seam_length = 0;                 // sum over the charts
   double coverage = 0;                    // fraction of [0,1]^2 covered by the UV triangles
+  // In texels: the least distance from a chart to another or to the texture's border, as stored
+  // (measure/least_gutter.h; distances between charts above twice the gutter are not looked for).
+  double least_gutter = 0;
   double seconds_total = 0;
   // Where seconds_total went, stage by stage in the order they ran: "input and whole map" (the
   // mesh's shape, its repairs, the whole mesh's map, and any atlas not kept), the kept atlas's

@@ -97,10 +97,12 @@ Strip strip_for(size_t pieces, double area_share, bool none_stays, const ChartOp
   Strip strip;
   strip.side = std::min(target, std::sqrt(target / n));
   while (rows(strip.side) * strip.side > target) strip.side *= 0.95;
+  // Half a gutter on each side of a cell: cells at least 4 gutters wide, the strip higher than
+  // the moved faces' share if need be, up to the height it may take; beyond, an eighth of a cell.
+  const double gutter = gutter_before_store(options);
+  if (strip.side < 4 * gutter && rows(4 * gutter) * 4 * gutter <= (none_stays ? 1 : 0.5)) strip.side = 4 * gutter;
   strip.columns = int(std::floor(1 / strip.side));
   strip.height = rows(strip.side) * strip.side;
-  // Half a gutter on each side of a cell where cells are wide enough, else an eighth of the cell.
-  const double gutter = gutter_before_store(options);
   strip.margin = strip.side >= 4 * gutter ? gutter / 2 : strip.side / 8;
   return strip;
 }
