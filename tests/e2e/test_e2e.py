@@ -40,6 +40,7 @@ import meshio  # noqa: E402
 import pytest_options  # noqa: E402
 from e2e import FAIL_RE, FILTER, GUTTER, HEADER_RE, CHARTS_RE, check_result, check_same_output  # noqa: E402
 from e2e import core_message, meshlabserver, mlx, prepare, rel_diff, run_tool  # noqa: E402
+from uv_charts import uv_charts  # noqa: E402
 
 BOUNDARIES = ("square", "circle", "natural")
 GENERATED_DISKS = ("wavy_grid", "hemisphere", "grid_with_unused_vertices")
@@ -374,30 +375,6 @@ def test_second_run_replaces(args):
     assert runs == {"circle", "square"}, f"the script ran the filter with both boundaries: {sorted(runs)}"
     assert proc.returncode == 0 and os.path.isfile(out_twice), "the second run succeeds"
     check_same_output(meshio.read_ply(out_twice), reference, "after Circle then Square as after Square alone")
-
-
-def uv_charts(faces, triangles):
-    """Each face's chart, numbered by first face: faces joined where an edge's two corners have the
-    same texcoords on both sides (as the filter's "Pack again only" reads charts)."""
-    parent = list(range(len(faces)))
-
-    def find(x):
-        while parent[x] != x:
-            parent[x] = parent[parent[x]]
-            x = parent[x]
-        return x
-
-    sides = {}
-    for f, (face, uv) in enumerate(zip(faces, triangles)):
-        for k in range(3):
-            a, b = face[k], face[(k + 1) % 3]
-            key, pair = (min(a, b), max(a, b)), (uv[k], uv[(k + 1) % 3]) if a < b else (uv[(k + 1) % 3], uv[k])
-            for g, other in sides.get(key, []):
-                if other == pair:
-                    parent[find(f)] = find(g)
-            sides.setdefault(key, []).append((f, pair))
-    number = {}
-    return [number.setdefault(find(f), len(number)) for f in range(len(faces))]
 
 
 def test_repack(args):

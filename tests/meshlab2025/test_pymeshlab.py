@@ -32,6 +32,7 @@ import sys
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "e2e"))
 from stretch_formula import map_stretch  # noqa: E402
+from uv_charts import uv_charts  # noqa: E402
 
 PYMESHLAB = "pymeshlab==2025.7.post1"
 NAME = "compute_texcoord_parametrization_low_stretch"
@@ -77,32 +78,6 @@ def texcoord_facts(np, m):
     return {"has": True, "shape": list(wtc.shape), "faces": len(F), "min": float(wtc.min()), "max": float(wtc.max()),
             "flipped": int((area_u < 0).sum()), "zero": int((area_u == 0).sum()),
             "non_positive": int((area_u <= 0).sum()), "l2": l2}, (sigma, area)
-
-
-def uv_charts(F, wedge_uv):
-    """Each face's chart, numbered by first face: faces joined where an edge's two corners have the
-    same texcoords on both sides (as repack_atlas reads charts)."""
-    parent = list(range(len(F)))
-
-    def find(x):
-        while parent[x] != x:
-            parent[x] = parent[parent[x]]
-            x = parent[x]
-        return x
-
-    sides = {}
-    for f, face in enumerate(F.tolist()):
-        for k in range(3):
-            a, b = face[k], face[(k + 1) % 3]
-            uv_a, uv_b = tuple(wedge_uv[3 * f + k]), tuple(wedge_uv[3 * f + (k + 1) % 3])
-            key = (min(a, b), max(a, b))
-            uv = (uv_a, uv_b) if a < b else (uv_b, uv_a)
-            for g, other in sides.get(key, []):
-                if other == uv:
-                    parent[find(f)] = find(g)
-            sides.setdefault(key, []).append((f, uv))
-    number = {}
-    return [number.setdefault(find(f), len(number)) for f in range(len(F))]
 
 
 def inside(args):
@@ -174,11 +149,16 @@ def inside(args):
     facts["atlas"] = ms.apply_filter(NAME, nondisk="Atlas for any mesh", maxstretch=1.1, texturesize=512, gutter=3)
     facts["atlas_uv"] = texcoord_facts(np, ms.current_mesh())[0]
     # The pack stage alone: that atlas packed again for 2048 texels and an 8-texel gutter.
-    F = ms.current_mesh().face_matrix()
-    atlas_charts = uv_charts(F, ms.current_mesh().wedge_tex_coord_matrix().tolist())
+    F = ms.current_mesh().face_matrix().tolist()
+
+    def triangles(m):
+        wedges = m.wedge_tex_coord_matrix().tolist()
+        return [wedges[3 * f:3 * f + 3] for f in range(len(F))]
+
+    atlas_charts = uv_charts(F, triangles(ms.current_mesh()))
     facts["repacked"] = ms.apply_filter(NAME, repackonly=True, texturesize=2048, gutter=8)
     facts["repacked_uv"] = texcoord_facts(np, ms.current_mesh())[0]
-    facts["repacked_same_charts"] = uv_charts(F, ms.current_mesh().wedge_tex_coord_matrix().tolist()) == atlas_charts
+    facts["repacked_same_charts"] = uv_charts(F, triangles(ms.current_mesh())) == atlas_charts
     ms.load_new_mesh(args.disk)  # no texcoords: nothing to pack again
     try:
         ms.apply_filter(NAME, repackonly=True)

@@ -85,9 +85,12 @@ void expect_valid_layout(const Eigen::MatrixXi& F, const ChartsResult& r, const 
   }
 }
 
-// The least distance between two triangles that do not overlap: from a corner of one to a side of
-// the other.
 double triangle_distance(const Eigen::Vector2d a[3], const Eigen::Vector2d b[3]) {
+  for (int i = 0; i < 3; ++i)  // sides that cross: 0
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector2d &p = a[i], &q = a[(i + 1) % 3], &s = b[k], &t = b[(k + 1) % 3];
+      if (signed_area(p, q, s) * signed_area(p, q, t) < 0 && signed_area(s, t, p) * signed_area(s, t, q) < 0) return 0;
+    }
   const auto to_side = [](const Eigen::Vector2d& p, const Eigen::Vector2d& s, const Eigen::Vector2d& t) {
     const double along = std::min(1.0, std::max(0.0, (p - s).dot(t - s) / (t - s).squaredNorm()));
     return (p - (s + along * (t - s))).norm();
@@ -101,7 +104,6 @@ double triangle_distance(const Eigen::Vector2d a[3], const Eigen::Vector2d b[3])
   return least;
 }
 
-// The least distance between triangles of different charts, in UV.
 double least_distance_between_charts(const Eigen::MatrixXi& F, const ChartsResult& r) {
   double least = std::numeric_limits<double>::infinity();
   for (Eigen::Index f = 0; f < F.rows(); ++f)

@@ -18,8 +18,8 @@ std::vector<double> texel_densities(const Eigen::MatrixXd& V, const Eigen::Matri
 // any overlap of the layout that covers a pixel centre.
 int overlapping_pixels(const ChartsResult& r);
 
-// The least distance between two triangles that do not overlap: from a corner of one to a side of
-// the other.
+// The least distance between two triangles: 0 where their sides cross, else from a corner of one
+// to a side of the other (one inside the other without crossing is not looked for).
 double triangle_distance(const Eigen::Vector2d a[3], const Eigen::Vector2d b[3]);
 // The least distance between triangles of different charts, in UV (all pairs: small meshes only).
 double least_distance_between_charts(const Eigen::MatrixXi& F, const ChartsResult& r);

@@ -2,7 +2,6 @@
 // every pair of triangles compared (layout_checks) on an atlas whose charts are moved by hand.
 #include <gtest/gtest.h>
 #include <algorithm>
-#include <limits>
 #include <vector>
 
 #include "atlas/charts.h"
@@ -25,30 +24,6 @@ Eigen::MatrixXd two_triangles(double apart) {
 }
 
 double border_distance(const Eigen::MatrixXd& uv) { return std::min(uv.minCoeff(), 1 - uv.maxCoeff()); }
-
-bool sides_cross(const Eigen::Vector2d a[3], const Eigen::Vector2d b[3]) {
-  const auto side = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& r) { return signed_area(p, q, r); };
-  for (int i = 0; i < 3; ++i)
-    for (int k = 0; k < 3; ++k) {
-      const Eigen::Vector2d &p = a[i], &q = a[(i + 1) % 3], &r = b[k], &t = b[(k + 1) % 3];
-      if (side(p, q, r) * side(p, q, t) < 0 && side(r, t, p) * side(r, t, q) < 0) return true;
-    }
-  return false;
-}
-
-// Every pair of triangles of different charts: 0 where their sides cross, else the least
-// distance from a corner of one to a side of the other.
-double every_pair_distance(const Eigen::MatrixXi& F, const ChartsResult& r) {
-  double least = std::numeric_limits<double>::infinity();
-  for (Eigen::Index f = 0; f < F.rows(); ++f)
-    for (Eigen::Index g = f + 1; g < F.rows(); ++g) {
-      if (r.face_chart[size_t(f)] == r.face_chart[size_t(g)]) continue;
-      const Eigen::Vector2d a[3] = {corner(r, f, 0), corner(r, f, 1), corner(r, f, 2)};
-      const Eigen::Vector2d b[3] = {corner(r, g, 0), corner(r, g, 1), corner(r, g, 2)};
-      least = std::min(least, sides_cross(a, b) ? 0.0 : triangle_distance(a, b));
-    }
-  return least;
-}
 
 }  // namespace
 
@@ -82,7 +57,7 @@ TEST(LeastGutter, TheSameAsEveryPairOfTrianglesCompared) {
       if (moved.face_chart[size_t(f)] == 0)
         for (int k = 0; k < 3; ++k) moved.corner_uv(f, 2 * k) += shift, moved.corner_uv(f, 2 * k + 1) += shift / 3;
     const double measured = least_gutter(moved.corner_uv, moved.face_chart, within);
-    const double every_pair = std::min(every_pair_distance(m.F, moved), border_distance(moved.corner_uv));
+    const double every_pair = std::min(least_distance_between_charts(m.F, moved), border_distance(moved.corner_uv));
     if (every_pair < within) {
       EXPECT_NEAR(measured, every_pair, 1e-12) << "shift " << shift;
       ++compared;
