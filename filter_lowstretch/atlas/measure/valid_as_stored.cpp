@@ -88,6 +88,7 @@ double gutter_before_store(const ChartOptions& options) {
 struct Strip {
   double side = 0, height = 0, margin = 0;
   int columns = 1;
+  double share_side = 0;  // the side the moved faces' share of the area gives (free texels start there)
 };
 
 Strip strip_for(size_t pieces, double area_share, bool none_stays, const ChartOptions& options) {
@@ -97,13 +98,15 @@ Strip strip_for(size_t pieces, double area_share, bool none_stays, const ChartOp
   Strip strip;
   strip.side = std::min(target, std::sqrt(target / n));
   while (rows(strip.side) * strip.side > target) strip.side *= 0.95;
-  // Half a gutter on each side of a cell: cells at least 4 gutters wide, the strip higher than
-  // the moved faces' share if need be, up to the height it may take; beyond, an eighth of a cell.
-  const double gutter = gutter_before_store(options);
-  if (strip.side < 4 * gutter && rows(4 * gutter) * 4 * gutter <= (none_stays ? 1 : 0.5)) strip.side = 4 * gutter;
+  strip.share_side = strip.side;
+  // Half a gutter on each side of a cell: cells at least 1.5 gutters wide (a face half a gutter
+  // across), the strip higher than the moved faces' share if need be, up to the height it may
+  // take; beyond, an eighth of a cell.
+  const double gutter = gutter_before_store(options), least = 1.5 * gutter;
+  if (strip.side < least && rows(least) * least <= (none_stays ? 1 : 0.5)) strip.side = least;
   strip.columns = int(std::floor(1 / strip.side));
   strip.height = rows(strip.side) * strip.side;
-  strip.margin = strip.side >= 4 * gutter ? gutter / 2 : strip.side / 8;
+  strip.margin = strip.side >= least ? gutter / 2 : strip.side / 8;
   return strip;
 }
 
@@ -166,15 +169,15 @@ void put_in_square(const Piece& piece, const Eigen::Vector2d& origin, double sid
     }
 }
 
-// The pieces in squares of the texels the layout that stays leaves free, as large as the strip's
-// cells or down to an eighth of them, the layout kept as it is (in [0,1]^2, which store() moves
+// The pieces in squares of the texels the layout that stays leaves free, as large as the moved
+// faces' share of the area gives (strip.share_side) or down to an eighth of that, the layout kept as it is (in [0,1]^2, which store() moves
 // inside the gutter again): its gutters stay. False if they do not all fit.
 bool put_in_free_texels(const ChartsResult& result, const Moving& m, const Strip& strip, const ChartOptions& options,
                         Eigen::MatrixXd& uv) {
   const double g = options.gutter / options.texture_size;
   std::vector<char> stays(m.moves.size());
   for (size_t f = 0; f < stays.size(); ++f) stays[f] = !m.moves[f];
-  for (double side = strip.side; side >= strip.side / 8; side /= 2) {
+  for (double side = strip.share_side; side >= strip.share_side / 8; side /= 2) {
     const std::vector<Eigen::Vector2d> squares = free_squares(result.corner_uv, stays, m.pieces.size(), side * (1 - 2 * g), options);
     if (squares.empty()) continue;
     uv = ((result.corner_uv.array() - g) / (1 - 2 * g)).matrix();
@@ -187,8 +190,8 @@ bool put_in_free_texels(const ChartsResult& result, const Moving& m, const Strip
 
 // The pieces in the cells of the strip along the top, the layout that stays scaled below it,
 // a gutter lower. Its gutters shrink with it: each chart that stays also shrinks about its box's
-// centre by what they lost, which gives them back (a chart under twice that loss, a speck, shrinks
-// to half its size and keeps less).
+// centre by what they lost, which gives them back (a speck under 1.1 times that loss shrinks to a
+// tenth of its size and keeps less).
 void put_in_strip(const ChartsResult& result, const Moving& m, const Strip& strip, const ChartOptions& options,
                   Eigen::MatrixXd& uv) {
   const double g = options.gutter / options.texture_size;
@@ -202,7 +205,7 @@ void put_in_strip(const ChartsResult& result, const Moving& m, const Strip& stri
   for (Eigen::Index f = 0; f < uv.rows(); ++f) {
     if (m.moves[size_t(f)]) continue;
     const Eigen::AlignedBox2d& box = boxes[size_t(result.face_chart[size_t(f)])];
-    const double shrink = std::max(0.5, 1 - lost / box.sizes().minCoeff());
+    const double shrink = std::max(0.1, 1 - lost / box.sizes().minCoeff());
     for (int k = 0; k < 3; ++k) uv.block(f, 2 * k, 1, 2) = (box.center() + shrink * (corner(f, k) - box.center())).transpose();
   }
   for (size_t p = 0; p < m.pieces.size(); ++p) {
