@@ -10,6 +10,16 @@
 
 namespace lowstretch {
 
+namespace {
+
+// An OBJ index (1-based; negative: relative to the last of `count`) as zero-based, -1 if out of range.
+long zero_based(long index, long count) {
+  const long i = index > 0 ? index - 1 : count + index;
+  return index != 0 && i >= 0 && i < count ? i : -1;
+}
+
+}  // namespace
+
 bool read_obj(const std::string& path, ToolMesh& mesh, std::string& error) {
   std::ifstream in(path);
   if (!in) { error = "cannot open the file"; return false; }
@@ -47,14 +57,13 @@ bool read_obj(const std::string& path, ToolMesh& mesh, std::string& error) {
         const long index = std::strtol(word.c_str(), &end, 10);  // "i", "i/t", "i//n", "i/t/n"
         if (end == word.c_str() || (*end != '\0' && *end != '/')) { error = where + "malformed face index '" + word + "'"; return false; }
         const long t = *end == '/' ? std::strtol(end + 1, nullptr, 10) : 0;  // 0: none
-        polygon_uv.push_back(t > 0 && t <= long(uvs.size()) ? int(t - 1) : t < 0 && -t <= long(uvs.size()) ? int(long(uvs.size()) + t) : -1);
-        const long count = long(points.size());
-        const long zero_based = index > 0 ? index - 1 : count + index;  // negative: relative
-        if (index == 0 || zero_based < 0 || zero_based >= count) {
+        polygon_uv.push_back(int(zero_based(t, long(uvs.size()))));
+        const long count = long(points.size()), vertex = zero_based(index, count);
+        if (vertex < 0) {
           error = where + "face index " + std::to_string(index) + " is out of range (1.." + std::to_string(count) + ")";
           return false;
         }
-        polygon.push_back(int(zero_based));
+        polygon.push_back(int(vertex));
       }
       if (polygon.size() < 3) { error = where + "a face needs at least three vertices"; return false; }
       for (size_t k = 1; k + 1 < polygon.size(); ++k) {
