@@ -41,6 +41,11 @@ testmesh::Mesh fuzzed_disk() {
   return m;
 }
 
+// Face f's UV triangle collapsed onto its first corner (zero area as stored).
+void collapse_onto_first_corner(ChartsResult& r, Eigen::Index f) {
+  for (int k = 1; k < 3; ++k) r.corner_uv.block(f, 2 * k, 1, 2) = r.corner_uv.block(f, 0, 1, 2);
+}
+
 // The mesh moved into [0,1]^3 by one scale, as the atlas measures it.
 Eigen::MatrixXd in_unit_box(const Eigen::MatrixXd& V) {
   const Eigen::RowVector3d low = V.colwise().minCoeff();
@@ -121,7 +126,7 @@ TEST(ValidAsStored, AFoldedChartIsMappedAgainAndACollapsedFaceGoesAlone) {
     }
   for (const int f : mirrored)
     for (int k = 0; k < 3; ++k) r.corner_uv(f, 2 * k) = low + high - r.corner_uv(f, 2 * k);
-  for (int k = 1; k < 3; ++k) r.corner_uv.block(collapsed, 2 * k, 1, 2) = r.corner_uv.block(collapsed, 0, 1, 2);
+  collapse_onto_first_corner(r, collapsed);
   const Eigen::MatrixXd unit_V = in_unit_box(m.V);
   ASSERT_EQ(invalid_faces(unit_V, m.F, r.corner_uv).size(), mirrored.size() + 1);
 
@@ -267,7 +272,7 @@ TEST(ValidAsStored, AFaceMovedAloneGoesIntoFreeTexelsAndTheRestKeepsItsPlaceAndG
   ASSERT_FALSE(r.error);
   ASSERT_GE(r.charts.size(), 2u);
   const Eigen::Index collapsed = 0;
-  for (int k = 1; k < 3; ++k) r.corner_uv.block(collapsed, 2 * k, 1, 2) = r.corner_uv.block(collapsed, 0, 1, 2);
+  collapse_onto_first_corner(r, collapsed);
   const Eigen::MatrixXd unit_V = in_unit_box(m.V);
   ASSERT_EQ(invalid_faces(unit_V, m.F, r.corner_uv).size(), 1u);
 
@@ -291,7 +296,7 @@ TEST(ValidAsStored, ManyFacesInTheStripKeepAGutterBetweenThem) {
   ChartsResult r = parameterize_charts(m.V, m.F, options);
   ASSERT_FALSE(r.error);
   for (Eigen::Index collapsed = 7; collapsed < m.F.rows(); collapsed += 151)
-    for (int k = 1; k < 3; ++k) r.corner_uv.block(collapsed, 2 * k, 1, 2) = r.corner_uv.block(collapsed, 0, 1, 2);
+    collapse_onto_first_corner(r, collapsed);
   const ChartsResult fixed = valid_as_stored(in_unit_box(m.V), m.F, 1, int(m.V.rows()), options, r);
   ASSERT_FALSE(fixed.error);
   ASSERT_GT(fixed.charts.size(), 250u);
@@ -310,7 +315,7 @@ TEST(ValidAsStored, WithNoFreeTexelsTheStripKeepsTheGutterFromTheDiskBelow) {
   ASSERT_FALSE(r.error);
   ASSERT_EQ(r.charts.size(), 1u);
   const Eigen::Index collapsed = 7;
-  for (int k = 1; k < 3; ++k) r.corner_uv.block(collapsed, 2 * k, 1, 2) = r.corner_uv.block(collapsed, 0, 1, 2);
+  collapse_onto_first_corner(r, collapsed);
   const Eigen::MatrixXd unit_V = in_unit_box(m.V);
 
   const ChartsResult fixed = valid_as_stored(unit_V, m.F, 1, int(m.V.rows()), options, r);
