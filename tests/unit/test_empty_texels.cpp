@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -281,4 +282,55 @@ TEST(PackByOutline, StartingFromAGivenDensityFindsAsDenseALayout) {
     EXPECT_GT(covered, 0.9 * cold_covered) << "from " << start;
     EXPECT_LT(warm, 1.5 * cold) << "from " << start;
   }
+}
+
+// A repair round (lay_out_around): the charts that were not cut stay where the last layout by
+// outline put them; the two halves of the cut one go into the texels left empty, at the same
+// density, a gutter from the others. With no room left for a piece (here a gutter of a quarter of
+// the texture, twice what the options allow, around the charts that stay and along the border:
+// nothing is left free), it says so.
+TEST(PackByOutline, ARepairRoundKeepsTheChartsNotCutWhereTheyWere) {
+  testmesh::Mesh m;
+  std::vector<SolvedChart> charts = six_charts(m);
+  const ChartOptions options;
+  std::vector<int> all(charts.size());
+  std::iota(all.begin(), all.end(), 0);
+  ChartsResult last;
+  double density = 0;
+  ASSERT_FALSE(lay_out(charts, options, m.F.rows(), all, last, density));
+  // The largest of the small grids (16 faces, rows bottom to top) cut into its lower and upper half.
+  const size_t cut = 1;
+  ASSERT_EQ(charts[cut].faces.size(), 32u);
+  const std::vector<int> faces = charts[cut].faces;
+  std::vector<SolvedChart> next;
+  std::vector<int> was;
+  for (size_t c = 0; c < charts.size(); ++c)
+    if (c != cut) next.push_back(charts[c]), was.push_back(int(c));
+  for (const size_t half : {0, 1}) {
+    next.push_back(solved_chart_of(m, std::vector<int>(faces.begin() + long(16 * half), faces.begin() + long(16 * half + 16))));
+    was.push_back(-1);
+  }
+  ChartsResult r;
+  ASSERT_TRUE(lay_out_around(next, options, last.corner_uv, was, r));
+  const double cells = options.texture_size - 2 * options.gutter;
+  for (size_t c = 0; c < next.size(); ++c) {
+    double uv = 0, area = 0;
+    for (const int f : next[c].faces) {
+      EXPECT_EQ(r.face_chart[size_t(f)], int(c)) << "face " << f;
+      if (was[c] >= 0) EXPECT_EQ(r.corner_uv.row(f), last.corner_uv.row(f)) << "face " << f << " stays";
+      const Eigen::Vector2d p[3] = {corner(r, f, 0), corner(r, f, 1), corner(r, f, 2)};
+      for (const Eigen::Vector2d& q : p) EXPECT_TRUE(q.minCoeff() >= 0 && q.maxCoeff() <= 1) << "face " << f;
+      EXPECT_GT(signed_area(p[0], p[1], p[2]), 0) << "face " << f;
+      const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), d = m.V.row(m.F(f, 2));
+      area += 0.5 * (b - a).cross(d - a).norm();
+      uv += signed_area(p[0], p[1], p[2]);
+    }
+    EXPECT_NEAR(uv * cells * cells / area / density, 1.0, 1e-6) << "chart " << c;
+  }
+  EXPECT_GE(least_distance_between_charts(m.F, r) * cells, options.gutter * (1 - 1e-6));
+
+  ChartOptions wide = options;
+  wide.gutter = wide.texture_size / 4.0;
+  ChartsResult none;
+  EXPECT_FALSE(lay_out_around(next, wide, last.corner_uv, was, none));
 }

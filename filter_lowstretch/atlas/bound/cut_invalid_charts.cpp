@@ -89,7 +89,7 @@ std::vector<int> without_specks(const Eigen::MatrixXd& unit_V, const Eigen::Matr
 int cut_invalid_charts(std::vector<SolvedChart>& charts, std::vector<int>& guests, const std::vector<int>& face_chart,
                         const std::vector<int>& invalid, const std::vector<int>& stretched,
                         const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const ChartOptions& options,
-                        std::vector<int>& flat) {
+                        std::vector<int>& flat, std::vector<int>& was) {
   std::vector<char> taken(size_t(F.rows()), 0), cut(charts.size(), 0), split(charts.size(), 0);
   for (const int f : invalid) {
     if (face_chart[size_t(f)] >= int(charts.size())) continue;  // a face already left alone, on its point
@@ -130,14 +130,17 @@ int cut_invalid_charts(std::vector<SolvedChart>& charts, std::vector<int>& guest
   solve_pieces(pieces, options);
   std::vector<SolvedChart> kept;
   std::vector<int> new_index(charts.size(), -1);
+  was.clear();
   for (size_t c = 0; c < charts.size(); ++c)
     if (!cut[c]) {
       new_index[c] = int(kept.size());
+      was.push_back(int(c));
       kept.push_back(std::move(charts[c]));
     }
   for (int& g : guests) g = new_index[size_t(g)];
   for (size_t p = 0; p < pieces.size(); ++p) {
     if (piece_is_guest[p]) guests.push_back(int(kept.size()));
+    was.push_back(-1);
     kept.push_back(std::move(pieces[p]));
   }
   charts = std::move(kept);

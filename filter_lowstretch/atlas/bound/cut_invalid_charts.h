@@ -35,11 +35,11 @@ std::vector<int> without_specks(const Eigen::MatrixXd& unit_V, const Eigen::Matr
 // invalid faces one by one and the connected parts of the rest, and the `stretched` charts (such
 // pieces far above the bound) in two where the stretch splits charts. Maps the new charts. The
 // pieces of a guest are guests (a layout by outline stays one). A flat face left alone has
-// nothing to map: it goes to `flat`.
+// nothing to map: it goes to `flat`. was: each chart's index before, -1 for a piece.
 // Returns how many charts held invalid faces.
 int cut_invalid_charts(std::vector<SolvedChart>& charts, std::vector<int>& guests, const std::vector<int>& face_chart,
                         const std::vector<int>& invalid, const std::vector<int>& stretched,
                         const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const ChartOptions& options,
-                        std::vector<int>& flat);
+                        std::vector<int>& flat, std::vector<int>& was);
 
 }  // namespace lowstretch

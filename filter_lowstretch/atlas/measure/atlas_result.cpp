@@ -208,12 +208,20 @@ void note_charts_above_bound(size_t chart_count, double max_stretch, ChartsResul
 }
 
 // One layout of the charts, measured; `flat` faces (in no chart) sit on one point, as one more
-// chart.
+// chart. After a cut, a layout by outline keeps the charts that were not cut where the last one
+// put them (last_uv, was: lay_out_around) if the pieces find room: a whole packing searches its
+// density again. Each layout by outline is kept in last_uv.
 ChartsResult lay_out_and_store(std::vector<SolvedChart>& charts, const std::vector<int>& guests, const std::vector<int>& flat,
                                const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, double unit, int vertex_rows,
-                               const ChartOptions& options, double& outline_density) {
+                               const ChartOptions& options, double& outline_density, Eigen::MatrixXd& last_uv,
+                               const std::vector<int>& was) {
   ChartsResult result;
-  if (Error e = lay_out(charts, options, F.rows(), guests, result, outline_density)) return failed_result(e);
+  const bool by_outline = !charts.empty() && guests.size() == charts.size();
+  const bool around = by_outline && last_uv.rows() == F.rows() && was.size() == charts.size() &&
+                      lay_out_around(charts, options, last_uv, was, result);
+  if (!around)
+    if (Error e = lay_out(charts, options, F.rows(), guests, result, outline_density)) return failed_result(e);
+  if (by_outline) last_uv = result.corner_uv;
   std::vector<std::vector<int>> faces_of;
   std::vector<std::vector<ChartPass>> passes;
   std::vector<int> kept;
@@ -251,8 +259,11 @@ ChartsResult atlas_of(std::vector<SolvedChart> charts, std::vector<int> guests, 
                       std::vector<int> flat) {
   size_t cut = 0;  // charts cut where their map was invalid
   double outline_density = 0;  // a round after a cut starts packing at the last round's density
+  Eigen::MatrixXd last_uv;     // the last layout by outline, and each chart's index in it
+  std::vector<int> was;
   for (int round = 0;; ++round) {
-    ChartsResult result = lay_out_and_store(charts, guests, flat, unit_V, F, unit, vertex_rows, options, outline_density);
+    ChartsResult result = lay_out_and_store(charts, guests, flat, unit_V, F, unit, vertex_rows, options, outline_density,
+                                            last_uv, was);
     const std::vector<int> invalid =
         result.error ? std::vector<int>() : without_specks(unit_V, F, result.corner_uv, invalid_faces(unit_V, F, result.corner_uv));
     // Charts to cut in two: pieces far above the bound, and charts whose map folds a face that
@@ -270,7 +281,7 @@ ChartsResult atlas_of(std::vector<SolvedChart> charts, std::vector<int> guests, 
                                " with flipped or zero-area triangles cut smaller and laid out again");
       return result;
     }
-    cut += size_t(cut_invalid_charts(charts, guests, result.face_chart, invalid, stretched, unit_V, F, options, flat));
+    cut += size_t(cut_invalid_charts(charts, guests, result.face_chart, invalid, stretched, unit_V, F, options, flat, was));
   }
 }
 

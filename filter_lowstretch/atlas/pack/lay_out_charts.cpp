@@ -202,4 +202,20 @@ Error lay_out(std::vector<SolvedChart>& charts, const ChartOptions& options, Eig
   }
 }
 
+bool lay_out_around(std::vector<SolvedChart>& charts, const ChartOptions& options, const Eigen::MatrixXd& last_uv,
+                    const std::vector<int>& was, ChartsResult& result) {
+  std::vector<char> turned;
+  fit_to_cells(charts, std::vector<char>(charts.size(), 0), {}, options, turned);
+  result.corner_uv = last_uv;
+  result.face_chart.assign(size_t(last_uv.rows()), 0);
+  std::vector<int> pieces;
+  for (size_t c = 0; c < charts.size(); ++c) {
+    if (charts[c].map.error) return false;
+    if (was[c] < 0) pieces.push_back(int(c));
+    else
+      for (const int f : charts[c].faces) result.face_chart[size_t(f)] = int(c);
+  }
+  return put_in_empty_texels(charts, pieces, options, result.corner_uv, result.face_chart).empty();
+}
+
 }  // namespace lowstretch

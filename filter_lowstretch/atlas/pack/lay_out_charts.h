@@ -28,4 +28,11 @@ void map_all_at_own_shape(std::vector<SolvedChart>& charts, const ChartOptions& 
 Error lay_out(std::vector<SolvedChart>& charts, const ChartOptions& options, Eigen::Index face_count,
               const std::vector<int>& guests, ChartsResult& result, double& outline_density);
 
+// A repair round's layout by outline (every chart a guest): the charts that were not cut stay where
+// the last round put them (last_uv: its corner_uv as laid out; was: each chart's index there, -1
+// for a piece cut since), and the pieces go into the texels left empty, at the same density.
+// False if a piece finds no room (a whole layout is then needed; result means nothing).
+bool lay_out_around(std::vector<SolvedChart>& charts, const ChartOptions& options, const Eigen::MatrixXd& last_uv,
+                    const std::vector<int>& was, ChartsResult& result);
+
 }  // namespace lowstretch
