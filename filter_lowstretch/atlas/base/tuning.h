@@ -86,8 +86,8 @@ struct AtlasTuning {
   // chart's cell, rarely of its shape, eat smaller gains.
   double free_must_pay = 4;
   // Packed by outline, a chart on its rectangle is tried free only above this L2 stretch: nearer
-  // 1, its box packs better than its free outline (the anchor's unmerged charts lost efficiency
-  // with every chart tried).
+  // 1, its box packs better than its free outline (a CAD part's unmerged charts lose efficiency
+  // when every chart is tried).
   double free_above = 1.02;
   // A chart seen along its normal at this L2 stretch or less is flat (a face of a CAD part).
   double flat_below = 1.02;
@@ -99,15 +99,15 @@ struct AtlasTuning {
   double ear_bulge = 0.25;
   // With fewer_seams (or refine), each map a layout keeps is refined (core/refine_stretch.h) this
   // many steps, however long they take, so that every run gives the same atlas. The maps that
-  // decide cuts and merges are not: refining them too took twice the time on the table's camel,
-  // for a longer seam. 10 steps left holes3 below UVAtlas's efficiency. Only on meshes of at most
-  // most_free_union_faces, as the free unions: every merge step refines its charts again, which
-  // on the 264k-face Poisson reconstruction took 301 s.
+  // decide cuts and merges are not: refining them too costs about as much time again, for no
+  // shorter seam. Half as many steps leave some meshes of the atlas table below UVAtlas's
+  // efficiency. Only on meshes of at most most_free_union_faces, as the free unions: every merge
+  // step refines its charts again, which on a larger scan takes minutes.
   int refine_steps = 20;
-  // And no UV triangle shrinks below this share of its chart's map (or half its own area): on the
-  // generated slivers scan, refining without it shrank zero-area slivers past the texture (113
-  // subtexel triangles, 1803 charts after the repair rounds). A disk's own refinement has none:
-  // there it stopped the mannequin's at 5 steps (L2 1.459 against 1.327).
+  // And no UV triangle shrinks below this share of its chart's map (or half its own area):
+  // refining without it shrinks a scan's zero-area slivers past the texture (subtexel triangles,
+  // which the repair rounds then cut into charts of their own). A disk's own refinement has none:
+  // there such a floor stops the refinement early, at a higher stretch.
   double refine_least_area = 1e-6;
 
   // --- Packing (pack/) ---
@@ -141,9 +141,8 @@ struct AtlasTuning {
   // Free unions (fewer_seams, or a least efficiency given) are merged all the way, then the count
   // of merges bisected this many times: 2^7 steps resolve the last merges of a few hundred charts
   // to one or two. Only on meshes of at most most_free_union_faces: each step lays out every chart
-  // fully mapped again, which on a 264k-face reconstruction took 565 s against 111 s without them.
-  // The 167k-face ball-pivoting scan takes about a minute, and its refined charts keep UVAtlas's
-  // efficiency, which its unrefined ones did not.
+  // fully mapped again, which on a larger scan takes several times the rest of the atlas; on the
+  // scans below it, refined charts keep UVAtlas's efficiency, which unrefined ones do not.
   int merge_count_bisections = 7;
   int most_free_union_faces = 200000;
   // Steps that fall below the least efficiency, in a row, before merging stops: the rectangle
@@ -152,14 +151,14 @@ struct AtlasTuning {
   int merge_misses = 1;
   // Unless options.min_efficiency is set, merged charts keep at least merge_floor and merge_keeps
   // of the unmerged atlas's efficiency (with its small charts in empty texels), by default and with
-  // fewer_seams. 0.61: at least the peers' on the atlas table's statues and scans (tests/bench);
-  // 90%: a CAD part's flat charts fill their boxes far better than the peers', and merging them
-  // across its edges would give much of that away. Fewer seams: about UVAtlas's efficiency (which
-  // has a third to a half of the default atlas's seams): 0.555 dominated UVAtlas (its median over
-  // runs) on the table and the generated slivers scan, which 0.55 merged past UVAtlas's efficiency;
-  // 0.5 and 0.57 lost on more of the table. Below its floor, fewer_seams keeps the unmerged atlas's
-  // efficiency: on the debris30000 scan (0.25 tiled) it merged nothing; by default, bull's charts
-  // would then merge, at efficiency 0.611 against 0.668.
+  // fewer_seams. The default's floor: at least the peers' efficiency on the atlas table's statues
+  // and scans (tests/bench); its share: a CAD part's flat charts fill their boxes far better than
+  // the peers', and merging them across its edges would give much of that away. Fewer seams: about
+  // UVAtlas's efficiency (which has a third to a half of the default atlas's seams), the floor at
+  // which it dominated UVAtlas on the most meshes of the table and the generated scans; a lower
+  // one merged past UVAtlas's efficiency. An atlas already below its floor (debris in a tiling)
+  // would merge nothing: fewer_seams keeps that atlas's efficiency instead; the default keeps its
+  // floor, which a statue's charts would otherwise merge below.
   double merge_floor[2] = {0.61, 0.555};
   double merge_keeps[2] = {0.9, 0.75};
   // Merging maps unions of at most this many times the mesh's faces in all, or least_merge_work
