@@ -4,10 +4,10 @@ edges into a closed mesh; TestReconstructions: tests/bench/make_reconstructions.
 ball pivoting, VCG and screened Poisson reconstructions and marching cubes on a quantized signed
 distance of it (run by --scan-python, a Python with numpy, pymeshlab and scikit-image). For each
 file (test_atlas[NAME]; test_fewer_seams_atlas adds --fewer-seams on two defects and on ball
-pivoting, on the slivers alone with --scan-size small) `lowstretch FILE -o out.obj --json` must exit 0, write every input face with texture
-coordinates inside the gutter, keep charts a gutter apart (the JSON's least_gutter), and leave no
-flipped UV triangle and no zero-area one on a face with
-3D area (a face of zero 3D area may have zero UV area, never a negative one), as read back from
+pivoting, on the slivers alone with --scan-size small) `lowstretch FILE -o out.obj --json` must
+exit 0, write every input face with texture coordinates inside the gutter, keep charts a gutter
+apart (the JSON's least_gutter), and leave no flipped UV triangle and no zero-area one on a face
+with 3D area (a face of zero 3D area may have zero UV area, never a negative one), as read back from
 the OBJ and as MeshLab's ASCII PLY writer would print it (each coordinate, a float, with 6
 decimals); TestPointSets: the same on CGAL's real scanner point sets reconstructed by MeshLab
 (tests/bench/make_point_set_scans.py); TestSimulatedMerges: the same on range scans of the closed

@@ -222,15 +222,11 @@ std::vector<SolvedChart> six_charts(testmesh::Mesh& m) {
   return charts;
 }
 
-// Packs the charts by outline from `density` (0: none); checks that each is placed whole, unturned
-// or turned by quarter turns (never mirrored), at the density returned, a gutter (in texels of the
-// stored layout) from every other chart, inside [0,1]^2. Returns the share of the texture covered.
-double check_packing(const testmesh::Mesh& m, const std::vector<SolvedChart>& charts, const ChartOptions& options,
-                     double& density) {
-  ChartsResult r;
-  r.corner_uv = Eigen::MatrixXd::Constant(m.F.rows(), 6, -7);
-  r.face_chart.assign(size_t(m.F.rows()), -1);
-  EXPECT_TRUE(pack_by_outline(charts, options, r.corner_uv, r.face_chart, density));
+// Checks a layout by outline: each chart placed whole, unturned or turned by quarter turns (never
+// mirrored), at `density`, a gutter (in texels of the stored layout) from every other chart,
+// inside [0,1]^2. Returns the share of the texture covered.
+double check_outline_layout(const testmesh::Mesh& m, const std::vector<SolvedChart>& charts, const ChartOptions& options,
+                            double density, const ChartsResult& r) {
   std::vector<double> uv(charts.size(), 0), area(charts.size(), 0);
   double covered = 0;
   for (size_t c = 0; c < charts.size(); ++c)
@@ -251,6 +247,17 @@ double check_packing(const testmesh::Mesh& m, const std::vector<SolvedChart>& ch
   }
   EXPECT_GE(least_distance_between_charts(m.F, r) * cells, options.gutter * (1 - 1e-6));
   return covered;
+}
+
+// Packs the charts by outline from `density` (0: none) and checks the layout at the density
+// returned (check_outline_layout).
+double check_packing(const testmesh::Mesh& m, const std::vector<SolvedChart>& charts, const ChartOptions& options,
+                     double& density) {
+  ChartsResult r;
+  r.corner_uv = Eigen::MatrixXd::Constant(m.F.rows(), 6, -7);
+  r.face_chart.assign(size_t(m.F.rows()), -1);
+  EXPECT_TRUE(pack_by_outline(charts, options, r.corner_uv, r.face_chart, density));
+  return check_outline_layout(m, charts, options, density, r);
 }
 
 }  // namespace
@@ -312,22 +319,10 @@ TEST(PackByOutline, ARepairRoundKeepsTheChartsNotCutWhereTheyWere) {
   }
   ChartsResult r;
   ASSERT_TRUE(lay_out_around(next, options, last.corner_uv, was, r));
-  const double cells = options.texture_size - 2 * options.gutter;
-  for (size_t c = 0; c < next.size(); ++c) {
-    double uv = 0, area = 0;
-    for (const int f : next[c].faces) {
-      EXPECT_EQ(r.face_chart[size_t(f)], int(c)) << "face " << f;
+  for (size_t c = 0; c < next.size(); ++c)
+    for (const int f : next[c].faces)
       if (was[c] >= 0) EXPECT_EQ(r.corner_uv.row(f), last.corner_uv.row(f)) << "face " << f << " stays";
-      const Eigen::Vector2d p[3] = {corner(r, f, 0), corner(r, f, 1), corner(r, f, 2)};
-      for (const Eigen::Vector2d& q : p) EXPECT_TRUE(q.minCoeff() >= 0 && q.maxCoeff() <= 1) << "face " << f;
-      EXPECT_GT(signed_area(p[0], p[1], p[2]), 0) << "face " << f;
-      const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), d = m.V.row(m.F(f, 2));
-      area += 0.5 * (b - a).cross(d - a).norm();
-      uv += signed_area(p[0], p[1], p[2]);
-    }
-    EXPECT_NEAR(uv * cells * cells / area / density, 1.0, 1e-6) << "chart " << c;
-  }
-  EXPECT_GE(least_distance_between_charts(m.F, r) * cells, options.gutter * (1 - 1e-6));
+  check_outline_layout(m, next, options, density, r);
 
   ChartOptions wide = options;
   wide.gutter = wide.texture_size / 4.0;
