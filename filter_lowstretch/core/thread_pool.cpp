@@ -27,6 +27,7 @@ class Pool {
     static Pool pool;
     return pool;
   }
+  int threads() const { return int(threads_.size()) + 1; }
   Pool(const Pool&) = delete;
   Pool& operator=(const Pool&) = delete;
   ~Pool() {
@@ -120,5 +121,7 @@ void for_each_index(int count, const std::function<void(int, int)>& job, const s
   }
   Pool::instance().run(loop);
 }
+
+int loop_threads() { return Pool::instance().threads(); }
 
 }  // namespace lowstretch

@@ -18,4 +18,7 @@ constexpr int kMostThreads = 8;
 // run, however the threads share the work.
 void for_each_index(int count, const std::function<void(int, int)>& job, const std::vector<int>& order = {});
 
+// The threads a loop runs on when none is busy: the pool's and the caller (1 to kMostThreads).
+int loop_threads();
+
 }  // namespace lowstretch

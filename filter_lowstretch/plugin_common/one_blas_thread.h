@@ -1,4 +1,4 @@
-// While the atlas solves its charts on both cores, OpenBLAS's own threads (UMFPACK's and
+// While the atlas solves its charts on the thread pool, OpenBLAS's own threads (UMFPACK's and
 // CHOLMOD's dense fronts) only spin: a quarter of the time on a 1.5k-vertex mesh went to
 // sched_yield. And a BLAS splitting its work by its thread count could give other last digits on
 // another machine (issue 51: no result depends on threads). This guard asks OpenBLAS for one

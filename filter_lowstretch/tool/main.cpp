@@ -211,7 +211,7 @@ int main(int argc, char** argv) {
   std::vector<ToolFace>().swap(mesh.face);
   mesh.Clear();
 
-  // The atlas solves charts on both cores, where OpenBLAS's own threads would only spin.
+  // The atlas solves charts on the thread pool, where OpenBLAS's own threads would only spin.
   const OneBlasThread one_blas_thread;
   const ChartsResult result = args.charts.repack ? repack_atlas(V, F, corner_uv, args.charts) : parameterize_charts(V, F, args.charts);
   if (result.error) {

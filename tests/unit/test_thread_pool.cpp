@@ -10,6 +10,7 @@
 #include <thread>
 #include <vector>
 
+#include "atlas/chart_map/chart_threads.h"
 #include "core/thread_pool.h"
 
 namespace lowstretch {
@@ -52,7 +53,21 @@ TEST(ThreadPool, SlotsAreDistinctAmongTheThreadsOfALoop) {
   // One slot per thread, and each thread keeps its slot for the whole loop.
   EXPECT_EQ(threads.size(), thread_slot.size());
   EXPECT_EQ(slots.size(), threads.size());
-  EXPECT_LE(int(threads.size()), pool_size());
+  EXPECT_LE(int(threads.size()), loop_threads());
+}
+
+TEST(ThreadPool, LoopThreadsCountsThePoolAndTheCaller) {
+  EXPECT_GE(loop_threads(), 1);
+  EXPECT_LE(loop_threads(), pool_size());
+}
+
+// A chart with more than one thread's share of the faces solved at once takes two threads (u and
+// v at once), any other one, whatever the machine's core count; on one thread, one.
+TEST(ThreadPool, AChartAboveOneThreadsShareSolvesOnTwoThreads) {
+  const size_t all = 1000 * size_t(loop_threads());
+  EXPECT_EQ(for_share(Options(), all / size_t(loop_threads()) + 1, all).solver.threads, 2);
+  EXPECT_EQ(for_share(Options(), all / size_t(loop_threads()), all).solver.threads, 1);
+  EXPECT_EQ(for_share(Options(), all, all).solver.threads, loop_threads() > 1 ? 2 : 1);
 }
 
 TEST(ThreadPool, NestedLoopsStartNoThreadAndRunEveryIndex) {

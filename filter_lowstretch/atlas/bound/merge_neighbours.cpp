@@ -120,7 +120,7 @@ void NeighbourMerging::merge_within(double growth) {
       c.joined = SolvedChart();  // frees its map
       continue;
     }
-    if (!c.mapped) {  // it and the unmapped ones after it, a few at a time on both cores
+    if (!c.mapped) {  // it and the unmapped ones after it, a few at a time on the thread pool
       if (double(mapped_faces_) > most_mapped_faces_) return;
       std::vector<size_t> batch;
       while (!queue_.empty() && batch.size() < size_t(kTuning.merges_mapped_together)) {

@@ -179,9 +179,9 @@ Error charts_to_cut(Splitting& s, size_t first, size_t end, std::vector<int>& to
   return {};
 }
 
-// Their cuts, made on both cores, largest first: a chart's parts depend on it alone, and the cuts
-// of a large mesh are slow on one.
-std::vector<Cut> cut_on_both_cores(Splitting& s, const std::vector<int>& to_cut) {
+// Their cuts, made on the thread pool, largest first: a chart's parts depend on it alone, and the
+// cuts of a large mesh are slow on one thread.
+std::vector<Cut> cut_in_parallel(Splitting& s, const std::vector<int>& to_cut) {
   std::vector<Cut> cuts(to_cut.size());
   std::vector<int> order(to_cut.size());
   std::iota(order.begin(), order.end(), 0);
@@ -298,7 +298,7 @@ Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
   s.tree.parts.resize(s.tree.nodes.size());
   s.charts = int(s.tree.nodes.size());
   const Options deciding = deciding_options(options.disk);
-  // Round after round: the new charts mapped on both cores, then those the bound cuts cut.
+  // Round after round: the new charts mapped on the thread pool, then those the bound cuts cut.
   for (size_t first = 0, end = s.tree.nodes.size(); first < end; first = end, end = s.tree.nodes.size()) {
     const std::vector<int> unmapped = cut_without_map(s, first, end);
     const size_t round_faces = faces_in(s.tree.nodes, first, end);
@@ -309,7 +309,7 @@ Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
     std::vector<int> to_cut;
     if (Error e = charts_to_cut(s, first, end, to_cut)) return e;
     to_cut.insert(to_cut.end(), unmapped.begin(), unmapped.end());
-    std::vector<Cut> cuts = cut_on_both_cores(s, to_cut);
+    std::vector<Cut> cuts = cut_in_parallel(s, to_cut);
     add_pieces(s, to_cut, cuts);
     for (const int i : unmapped) map_if_left_whole(s, deciding, s.tree.nodes[size_t(i)], s.tree.parts[size_t(i)]);
     if (options.disk.progress && !options.disk.progress(0.9 * (1 - std::pow(0.5, double(end))), "charts"))

@@ -14,7 +14,7 @@ std::vector<int> largest_first(const std::vector<SolvedChart>& charts, size_t fi
 }
 
 Options for_share(Options options, size_t faces, size_t all_faces) {
-  options.solver.threads = 2 * faces > all_faces ? 2 : 1;
+  options.solver.threads = double(faces) * loop_threads() > double(all_faces) ? 2 : 1;
   return options;
 }
 

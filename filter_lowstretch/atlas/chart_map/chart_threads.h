@@ -14,10 +14,10 @@ namespace lowstretch {
 // The indices of charts, most faces first (ties by index).
 std::vector<int> largest_first(const std::vector<SolvedChart>& charts, size_t first, size_t end);
 
-// The method's options for a chart of `faces` among `all_faces` solved at once. A chart with
-// most of the faces solves u and v on two threads while the rest share the second core (else it
-// would finish last, alone on one core); any other builds one multigrid hierarchy for u and v
-// instead of two, the threads keeping the cores busy.
+// The method's options for a chart of `faces` among `all_faces` solved at once. A chart with more
+// than one thread's share of the faces solves u and v on two threads while the rest share the
+// others (else it would finish last, alone on one); any other builds one multigrid hierarchy for
+// u and v instead of two, the other charts keeping the threads busy.
 Options for_share(Options options, size_t faces, size_t all_faces);
 
 // The faces of charts [first, end) that are mapped (not cut ahead).

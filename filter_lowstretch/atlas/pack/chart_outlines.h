@@ -47,7 +47,7 @@ class Outlines {
   // Whether chart c could fit on the grid at all (its outline is drawn only then).
   bool has_room(int c) const { return size_[size_t(c)].minCoeff() > 0; }
   int turnings(int c) const { return turnings_[size_t(c)]; }
-  // Every turning of every chart with room, on both cores: then `at` only reads, from any thread.
+  // Every turning of every chart with room, on the thread pool: then `at` only reads, from any thread.
   void draw_all() {
     for_each_index(int(charts_.size()), [this](int c, int) {
       for (int turns = 0; has_room(c) && turns < turnings(c); ++turns) at(c, turns);

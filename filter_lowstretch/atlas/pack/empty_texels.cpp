@@ -220,7 +220,7 @@ bool pack_by_outline(const std::vector<SolvedChart>& charts, const ChartOptions&
   Eigen::MatrixXd best_uv;
   std::vector<int> best_chart;
   // Either way of choosing a turning: each fills some layouts better than the other. Both are
-  // tried at once, each on a core; the lowest bottom is kept where both fit.
+  // tried at once on the thread pool; the lowest bottom is kept where both fit.
   struct Try {
     Eigen::MatrixXd corner_uv;
     std::vector<int> face_chart;

@@ -17,7 +17,7 @@ std::vector<double> cell_areas(const std::vector<SolvedChart>& charts);
 // A chart that keeps its own shape (packed by outline, or put into empty texels) mapped fully if
 // its map was made only to decide: free, or onto its own rectangle, as it was.
 void map_at_own_shape(SolvedChart& chart, const Options& options);
-// Every chart so, on both cores, largest first: once, before layouts that each copy the charts.
+// Every chart so, on the thread pool, largest first: once, before layouts that each copy the charts.
 void map_all_at_own_shape(std::vector<SolvedChart>& charts, const ChartOptions& options);
 
 // Every chart but the guests onto its cell of the tiling: mapped again onto a rectangle of the

@@ -32,7 +32,7 @@ void fill_empty_texels(const AtlasSearch& s, const std::vector<SolvedChart>& kep
   const double tiled_efficiency = texture_efficiency(tiled);
   std::vector<SolvedChart> flat_seen = kept;
   see_flat_charts_along_normal(flat_seen);
-  // Each choice laid out on its own (on both cores), then taken in order where it does better.
+  // Each choice laid out on its own (on the thread pool), then taken in order where it does better.
   constexpr size_t choices = std::extent<decltype(kGuestChoices)>::value;
   std::array<ChartsResult, choices> nested;
   std::array<bool, choices> tried{};
@@ -73,7 +73,7 @@ ChartsResult packed_by_outline(const AtlasSearch& s, std::vector<SolvedChart> ch
     return std::count_if(c.begin(), c.end(), [](const SolvedChart& chart) { return chart.free_boundary; });
   };
   const bool any_flat = free_charts(flat_seen) > free_charts(charts);
-  // Each packing on a core of its own: a packing is one thread's work.
+  // The packings at once, on the thread pool: a packing is one thread's work.
   ChartsResult packed, flat;
   for_each_index(any_flat ? 2 : 1, [&](int i, int) {
     if (i == 0) packed = packed_whole(s, charts);
