@@ -3,6 +3,7 @@
 #pragma once
 #include <Eigen/Core>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "atlas/base/atlas_types.h"
@@ -10,6 +11,13 @@
 #include "atlas/chart_map/solved_chart.h"
 
 namespace lowstretch {
+
+// A candidate atlas: its layout, and its charts as they were before it (what later layouts of the
+// same charts start from).
+struct LaidOutCharts {
+  ChartsResult atlas;
+  std::vector<SolvedChart> charts;
+};
 
 // What the candidate atlases of make_atlas share: the mesh in its unit box, the options, and the
 // best atlas so far with its notes and its charts.
@@ -33,7 +41,7 @@ struct AtlasSearch {
   // tiling: small charts are put into the texels it leaves empty, and every chart is packed by its
   // outline, on the best atlas only (doing so on every candidate can find a better one, but costs
   // much more time).
-  std::vector<SolvedChart> kept, tried;
+  std::vector<SolvedChart> kept;
   // The best atlas's charts as cut, before any was mapped free: merging starts from them, and
   // frees charts at the same cut_must_pay.
   std::vector<SolvedChart> cut;
@@ -51,7 +59,13 @@ struct AtlasSearch {
   AtlasSearch& operator=(const AtlasSearch&) = delete;
 
   // The charts tiled, or packed by their outlines where the tiling cannot place them.
-  ChartsResult tile(std::vector<SolvedChart> charts);
+  LaidOutCharts tile(std::vector<SolvedChart> charts) const;
+  // The candidate becomes the best atlas.
+  void keep(LaidOutCharts candidate) {
+    result = std::move(candidate.atlas);
+    kept = std::move(candidate.charts);
+    made = true;
+  }
 };
 
 // The charts' L2^2 over their 3D area, as their maps measured it (0 without area).

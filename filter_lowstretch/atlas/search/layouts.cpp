@@ -88,14 +88,16 @@ ChartsResult packed_by_outline(const AtlasSearch& s, std::vector<SolvedChart> ch
 
 // A cell per chart, each a few texels wide inside its gutter, cannot hold thousands of tiny charts
 // (a scan's debris) on a small texture or with a wide gutter; their outlines need no such floor.
-ChartsResult AtlasSearch::tile(std::vector<SolvedChart> charts) {
-  tried = charts;
-  ChartsResult tiled = atlas_of(std::move(charts), {}, unit_V, F, unit, int(V.rows()), options);
-  if (tiled.error.code != ErrorCode::ChartsNotPacked) return tiled;
-  ChartsResult packed = packed_by_outline(*this, tried);
+LaidOutCharts AtlasSearch::tile(std::vector<SolvedChart> charts) const {
+  LaidOutCharts tiled;
+  tiled.atlas = atlas_of(charts, {}, unit_V, F, unit, int(V.rows()), options);
+  tiled.charts = std::move(charts);
+  if (tiled.atlas.error.code != ErrorCode::ChartsNotPacked) return tiled;
+  ChartsResult packed = packed_by_outline(*this, tiled.charts);
   if (packed.error) return tiled;
-  packed.notes.push_back(std::to_string(tried.size()) + " charts are too many for a cell each in the tiling: packed by their outlines");
-  return packed;
+  packed.notes.push_back(std::to_string(tiled.charts.size()) + " charts are too many for a cell each in the tiling: packed by their outlines");
+  tiled.atlas = std::move(packed);
+  return tiled;
 }
 
 // Free outlines

@@ -79,12 +79,10 @@ Error cut_along_sharp_edges(AtlasSearch& s) {
     for (const double must_pay : kTuning.free_faces_must_pay) {
       std::vector<SolvedChart> leaves_of_try = by_faces_leaves;
       free_the_charts_that_stretch(leaves_of_try, s.options, must_pay);
-      ChartsResult by_faces = s.tile(std::move(leaves_of_try));
-      if (by_faces.error || (s.made && !(texture_efficiency(by_faces) > texture_efficiency(s.result)))) continue;
+      LaidOutCharts by_faces = s.tile(std::move(leaves_of_try));
+      if (by_faces.atlas.error || (s.made && !(texture_efficiency(by_faces.atlas) > texture_efficiency(s.result)))) continue;
       const std::string against = s.made ? " against " + number_text(texture_efficiency(s.result)) : "";
-      s.result = std::move(by_faces);
-      s.made = true;
-      s.kept = std::move(s.tried);
+      s.keep(std::move(by_faces));
       s.cut = by_faces_leaves;
       s.cut_must_pay = must_pay;
       s.notes.resize(s.common_notes);  // the cut's notes go with its atlas
@@ -109,26 +107,22 @@ Error cut_by_stretch(AtlasSearch& s) {
   std::vector<SolvedChart> unfreed = leaves;  // merging starts from them
   free_the_charts_that_stretch(leaves, s.options);
   const size_t cut_into = leaves.size();
-  ChartsResult by_stretch = s.tile(std::move(leaves));
-  std::vector<SolvedChart> by_stretch_kept = std::move(s.tried);
-  if (!uncut.empty() && !(texture_efficiency(by_stretch) > kTuning.clearly_better * best_possible_efficiency(uncut))) {
-    ChartsResult whole = s.tile(std::move(uncut));
-    if (more_efficient(whole, by_stretch)) {
+  LaidOutCharts by_stretch = s.tile(std::move(leaves));
+  if (!uncut.empty() && !(texture_efficiency(by_stretch.atlas) > kTuning.clearly_better * best_possible_efficiency(uncut))) {
+    LaidOutCharts whole = s.tile(std::move(uncut));
+    if (more_efficient(whole.atlas, by_stretch.atlas)) {
       by_stretch_notes.push_back("one chart per part: cut into " + std::to_string(cut_into) + " charts, the atlas had efficiency " +
-                                 number_text(texture_efficiency(by_stretch)) + " (coverage / L2^2) against " +
-                                 number_text(texture_efficiency(whole)));
+                                 number_text(texture_efficiency(by_stretch.atlas)) + " (coverage / L2^2) against " +
+                                 number_text(texture_efficiency(whole.atlas)));
       by_stretch = std::move(whole);
-      by_stretch_kept = std::move(s.tried);
       unfreed.clear();  // parts have no neighbours to merge with
     }
   }
-  if (!s.made || more_efficient(by_stretch, s.result)) {
-    s.result = std::move(by_stretch);
-    s.kept = std::move(by_stretch_kept);
+  if (!s.made || more_efficient(by_stretch.atlas, s.result)) {
+    s.keep(std::move(by_stretch));
     s.cut = std::move(unfreed);
     s.cut_must_pay = kTuning.free_must_pay;
     s.notes = std::move(by_stretch_notes);
-    s.made = true;
   }
   return {};
 }

@@ -65,21 +65,18 @@ struct MergeSteps {
   // Whether the first `merges` merges keep the least efficiency.
   bool keep_least(size_t merges) {
     std::vector<SolvedChart> charts = merging.charts_after(merges);
-    ChartsResult merged;
+    LaidOutCharts merged;
     if (by_outline) {
       map_once(charts);
-      s.tried = charts;
-      merged = packed_by_outline(s, charts);
+      merged.atlas = packed_by_outline(s, charts);
+      merged.charts = std::move(charts);
     } else {
       free_the_charts_that_stretch(charts, s.options, s.cut_must_pay);
       merged = s.tile(std::move(charts));
-      if (!merged.error) fill_empty_texels(s, s.tried, merged);
+      if (!merged.atlas.error) fill_empty_texels(s, merged.charts, merged.atlas);
     }
-    if (merged.error || !(texture_efficiency(merged) >= least)) return false;
-    if (merged.seam_length < s.result.seam_length) {
-      s.result = std::move(merged);
-      s.kept = std::move(s.tried);
-    }
+    if (merged.atlas.error || !(texture_efficiency(merged.atlas) >= least)) return false;
+    if (merged.atlas.seam_length < s.result.seam_length) s.keep(std::move(merged));
     return true;
   }
 };
