@@ -28,7 +28,7 @@ struct Options {
   SolverOptions solver;  // how each pass is solved (solver_options.h)
   // After the kept pass, minimize the L2 stretch directly (refine_stretch.h), for at most
   // refine_iterations steps: a work budget, never a time one, so that every run gives the same map;
-  // a note says what it gained. The atlas's charts take kTuning.refine_steps each instead.
+  // a note says what it gained.
   bool refine = false;
   int refine_iterations = 25;  // 1 to kMostRefineIterations; about what 8.5 times the passes' time reached
 
@@ -39,7 +39,7 @@ struct Options {
   // Called with a fraction in [0, 1] and the current stage; return false to cancel the run.
   std::function<bool(double fraction, const char* stage)> progress;
   // Called after every pass with that pass's UV (rows as in V, unused rows 0), for callers that
-  // measure passes their own way: charts measure each pass over the real faces only.
+  // measure passes their own way (over some of the faces only, say).
   std::function<void(int pass, const Eigen::MatrixXd& uv)> pass_uv;
   // false: each pass measures its stretch and flips only, not the edge, angle and area distortions
   // (callers that measure passes their own way need none of them).
