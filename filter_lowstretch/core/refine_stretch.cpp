@@ -1,7 +1,5 @@
 #include "core/refine_stretch.h"
 
-#include <Eigen/Cholesky>
-#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <Eigen/Sparse>
@@ -14,6 +12,7 @@
 
 #include "core/metis_lock.h"
 #include "core/stretch.h"
+#include "core/stretch_hessian.h"
 
 namespace lowstretch {
 
@@ -182,32 +181,20 @@ HessianLayout hessian_layout(const DiskMesh& disk, const std::vector<int>& unkno
   return layout;
 }
 
-// Projected Newton (Teran et al. 2005; as in Smith et al. 2019): the energy's Hessian of each
-// triangle with respect to J, its negative eigenvalues clamped to zero, pulled back to the
-// triangle's six texture coordinates and added into layout.H's values. With a free boundary, the
-// stretch energy's Hessian times `scale` (the UV area over its first): the terms of the product
-// with the area are left out, which keeps H positive definite and each step a descent.
+// Projected Newton (Teran et al. 2005): each triangle's Hessian with respect to J, its negative
+// eigenvalue clamped to zero (core/stretch_hessian.h), pulled back to the triangle's six texture
+// coordinates and added into layout.H's values. With a free boundary, the stretch energy's
+// Hessian times `scale` (the UV area over its first): the terms of the product with the area are
+// left out, which keeps H positive definite and each step a descent.
 void fill_projected_hessian(const DiskMesh& disk, const std::vector<FlatTriangle>& flat, const Eigen::MatrixXd& uv,
                             HessianLayout& layout, double scale) {
   double* values = layout.H.valuePtr();
   std::fill(values, values + layout.H.nonZeros(), 0.0);
-  Eigen::Matrix4d C;  // vec(cofactor(J)) = C vec(J), vec row-major (J00, J01, J10, J11)
-  C << 0, 0, 0, 1, 0, 0, -1, 0, 0, -1, 0, 0, 1, 0, 0, 0;
   for (Eigen::Index f = 0; f < disk.F.rows(); ++f) {
     const FlatTriangle& t = flat[size_t(f)];
     if (!(t.area > 0)) continue;
     const Eigen::RowVector3i face = disk.F.row(f);
-    const Eigen::Matrix2d J = jacobian(t, uv, face);
-    const double det = J.determinant(), n = J.squaredNorm();
-    const Eigen::Vector4d j(J(0, 0), J(0, 1), J(1, 0), J(1, 1)), c = C * j;
-    Eigen::Matrix4d H = Eigen::Matrix4d::Identity() / (det * det) - 2 * (j * c.transpose() + c * j.transpose()) / (det * det * det) -
-                        n * C / (det * det * det) + 3 * n * c * c.transpose() / (det * det * det * det);
-    H *= t.area * scale;
-    Eigen::Matrix4d projected = H;
-    if (Eigen::LLT<Eigen::Matrix4d>(H).info() != Eigen::Success) {  // not positive definite: clamp
-      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(H);
-      projected = eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).asDiagonal() * eigen.eigenvectors().transpose();
-    }
+    const Eigen::Matrix4d projected = t.area * scale * projected_stretch_hessian(jacobian(t, uv, face));
     // vec(J) = G x with x = (u0, u1, u2, v0, v1, v2).
     Eigen::Matrix<double, 4, 6> G = Eigen::Matrix<double, 4, 6>::Zero();
     for (int k = 0; k < 3; ++k) {
