@@ -1,12 +1,15 @@
 #include "atlas/repack.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <numeric>
+#include <string>
 #include <tuple>
 #include <utility>
 #include <vector>
 
 #include "atlas/base/used_vertices.h"
+#include "atlas/bound/cut_invalid_charts.h"
 #include "atlas/charts.h"
 #include "atlas/measure/atlas_result.h"
 #include "atlas/measure/valid_as_stored.h"
@@ -116,6 +119,31 @@ SolvedChart chart_of_uv(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F,
   return chart;
 }
 
+// The layout as given, its charts' bounding square onto [0,1]^2, measured and stored as a packing
+// is; false where a chart comes closer than the new gutter to another, or a face is invalid.
+bool layout_as_given(const std::vector<SolvedChart>& charts, const std::vector<int>& flat, const Eigen::MatrixXd& corner_uv,
+                     const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, double unit, int vertex_rows,
+                     const ChartOptions& options, ChartsResult& result) {
+  Eigen::AlignedBox2d box;
+  for (const SolvedChart& chart : charts)
+    for (const int f : chart.faces)
+      for (int k = 0; k < 3; ++k) box.extend(uv_at(corner_uv, f, k));
+  const double side = box.sizes().maxCoeff();
+  if (!(side > 0)) return false;
+  ChartsResult laid_out;
+  laid_out.corner_uv = Eigen::MatrixXd::Zero(F.rows(), 6);
+  laid_out.face_chart.assign(size_t(F.rows()), -1);
+  for (size_t c = 0; c < charts.size(); ++c)
+    for (const int f : charts[c].faces) {
+      laid_out.face_chart[size_t(f)] = int(c);
+      for (int k = 0; k < 3; ++k) laid_out.corner_uv.block(f, 2 * k, 1, 2) = ((uv_at(corner_uv, f, k) - box.min()) / side).transpose();
+    }
+  result = stored_layout(charts, flat, std::move(laid_out), unit_V, F, unit, vertex_rows, options);
+  measure_gutter(options, result);
+  return !result.error && result.least_gutter >= options.gutter * (1 - 1e-6) &&
+         without_specks(unit_V, F, result.corner_uv, invalid_faces(unit_V, F, result.corner_uv)).empty();
+}
+
 }  // namespace
 
 ChartsResult repack_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& corner_uv,
@@ -140,10 +168,20 @@ ChartsResult repack_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, co
   std::vector<int> all(charts.size());
   std::iota(all.begin(), all.end(), 0);
   const size_t chart_count = charts.size();
+  ChartsResult as_given;
+  const bool keeps_gutter = layout_as_given(charts, flat, corner_uv, unit_V, F, unit, int(V.rows()), options, as_given);
   ChartsResult result = atlas_of(std::move(charts), std::move(all), unit_V, F, unit, int(V.rows()), options, std::move(flat));
   if (result.error) return result;
   stages.push_back({"charts packed by outline", seconds_since(stage)});
-  result.notes.insert(result.notes.begin(), std::to_string(chart_count) + " charts read from the texture coordinates packed again");
+  const std::string read = std::to_string(chart_count) + " charts read from the texture coordinates";
+  if (keeps_gutter && texture_efficiency(as_given) >= texture_efficiency(result)) {
+    as_given.notes.insert(as_given.notes.begin(), read + " kept where they are, scaled: efficiency " +
+                                                      number_text(texture_efficiency(as_given)) + " (coverage / L2^2) against " +
+                                                      number_text(texture_efficiency(result)) + " packed again");
+    result = std::move(as_given);
+  } else {
+    result.notes.insert(result.notes.begin(), read + " packed again");
+  }
   stage = Clock::now();
   result = valid_as_stored(unit_V, F, unit, int(V.rows()), options, std::move(result));
   measure_gutter(options, result);

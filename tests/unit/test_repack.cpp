@@ -134,3 +134,38 @@ TEST(Repack, APartOfNoAreaSitsOnAPoint) {
   EXPECT_EQ(signed_area(corner(after, faces, 0), corner(after, faces, 1), corner(after, faces, 2)), 0);
   expect_valid_layout(m.F, after, &m.V);
 }
+
+// Where the given layout, scaled into the new texture, keeps the new gutter and uses the texture
+// at least as well as a packing, it is kept: the whole layout moves by one scale and shift.
+TEST(Repack, ALayoutThatKeepsTheNewGutterIsKeptScaledWhereItUsesTheTextureBetter) {
+  const testmesh::Mesh m = parts();
+  const ChartsResult before = parameterize_charts(m.V, m.F, ChartOptions());
+  ASSERT_FALSE(before.error) << message(before.error);
+  ChartOptions twice;  // the same share of the texture between charts
+  twice.texture_size = 2048;
+  twice.gutter = 4;
+  const ChartsResult after = repack_atlas(m.V, m.F, before.corner_uv, twice);
+  ASSERT_FALSE(after.error) << message(after.error);
+  expect_valid_layout(m.F, after, &m.V);
+  EXPECT_GE(least_distance_between_charts(m.F, after), twice.gutter / twice.texture_size * (1 - 1e-5));
+  EXPECT_GE(texture_efficiency(after), texture_efficiency(before) * (1 - 1e-6));
+  ASSERT_FALSE(after.notes.empty());
+  EXPECT_NE(after.notes[0].find("kept where they are"), std::string::npos) << after.notes[0];
+  // One scale and shift for every corner of every chart: from two far corners, then all.
+  Eigen::Index far = 0;
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+    if ((corner(before, f, 0) - corner(before, 0, 0)).norm() > (corner(before, far, 0) - corner(before, 0, 0)).norm()) far = f;
+  const double scale = (corner(after, far, 0) - corner(after, 0, 0)).norm() / (corner(before, far, 0) - corner(before, 0, 0)).norm();
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector2d expected = corner(after, 0, 0) + scale * (corner(before, f, k) - corner(before, 0, 0));
+      EXPECT_LT((corner(after, f, k) - expected).norm(), 1e-5) << "face " << f;
+    }
+  // A gutter the layout does not keep: packed again, with it.
+  ChartOptions wider;
+  wider.gutter = 8;
+  const ChartsResult packed = repack_atlas(m.V, m.F, before.corner_uv, wider);
+  ASSERT_FALSE(packed.error) << message(packed.error);
+  EXPECT_NE(packed.notes[0].find("packed again"), std::string::npos) << packed.notes[0];
+  EXPECT_GE(least_distance_between_charts(m.F, packed), wider.gutter / wider.texture_size * (1 - 1e-5));
+}

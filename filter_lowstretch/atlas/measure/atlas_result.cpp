@@ -207,10 +207,10 @@ void note_charts_above_bound(size_t chart_count, double max_stretch, ChartsResul
                            reasons.notes[k]);
 }
 
-// One layout of the charts, measured; `flat` faces (in no chart) sit on one point, as one more
-// chart. After a cut, a layout by outline keeps the charts that were not cut where the last one
-// put them (last_uv, was: lay_out_around) if the pieces find room: a whole packing searches its
-// density again. Each layout by outline is kept in last_uv.
+// One layout of the charts, measured (stored_layout). After a cut, a layout by outline keeps the
+// charts that were not cut where the last one put them (last_uv, was: lay_out_around) if the
+// pieces find room: a whole packing searches its density again. Each layout by outline is kept in
+// last_uv.
 ChartsResult lay_out_and_store(std::vector<SolvedChart>& charts, const std::vector<int>& guests, const std::vector<int>& flat,
                                const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, double unit, int vertex_rows,
                                const ChartOptions& options, double& outline_density, Eigen::MatrixXd& last_uv,
@@ -222,6 +222,14 @@ ChartsResult lay_out_and_store(std::vector<SolvedChart>& charts, const std::vect
   if (!around)
     if (Error e = lay_out(charts, options, F.rows(), guests, result, outline_density)) return failed_result(e);
   if (by_outline) last_uv = result.corner_uv;
+  return stored_layout(charts, flat, std::move(result), unit_V, F, unit, vertex_rows, options);
+}
+
+}  // namespace
+
+ChartsResult stored_layout(const std::vector<SolvedChart>& charts, const std::vector<int>& flat, ChartsResult result,
+                           const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, double unit, int vertex_rows,
+                           const ChartOptions& options) {
   std::vector<std::vector<int>> faces_of;
   std::vector<std::vector<ChartPass>> passes;
   std::vector<int> kept;
@@ -251,8 +259,6 @@ ChartsResult lay_out_and_store(std::vector<SolvedChart>& charts, const std::vect
   note_charts_above_bound(faces_of.size(), options.max_stretch, result);
   return result;
 }
-
-}  // namespace
 
 ChartsResult atlas_of(std::vector<SolvedChart> charts, std::vector<int> guests, const Eigen::MatrixXd& unit_V,
                       const Eigen::MatrixXi& F, double unit, int vertex_rows, const ChartOptions& options,

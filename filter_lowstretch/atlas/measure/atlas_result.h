@@ -20,6 +20,13 @@ ChartsResult atlas_of(std::vector<SolvedChart> charts, std::vector<int> guests, 
                       const Eigen::MatrixXi& F, double unit, int vertex_rows, const ChartOptions& options,
                       std::vector<int> flat = {});
 
+// A layout of the charts (result.corner_uv in [0,1]^2 and result.face_chart, for the charts'
+// faces) measured as atlas_of's: the flat faces on one point, the charts' summaries, seams and
+// notes, then stored.
+ChartsResult stored_layout(const std::vector<SolvedChart>& charts, const std::vector<int>& flat, ChartsResult result,
+                           const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, double unit, int vertex_rows,
+                           const ChartOptions& options);
+
 // The layout as MeshLab stores it: inside the gutter, rounded to float, then measured; counts
 // the triangles no texture shows (smaller than a texel of 4096^2) and those that rounding flips or
 // collapses (a note).
