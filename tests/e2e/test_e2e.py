@@ -379,7 +379,8 @@ def test_second_run_replaces(args):
 
 def test_repack(args):
     """The filter, then the filter with "Pack again only", 256 texels and an 8-texel gutter, in one
-    meshlabserver script: the log says the charts were read and packed again, the saved PLY holds
+    meshlabserver script: the log says the charts were read and packed again (or kept where they
+    are, scaled, where that keeps the gutter and uses the texture better), the saved PLY holds
     the charts of the filter alone, 8 texels of 256 inside [0,1]^2, no flipped or zero-area UV
     triangle."""
     shutil.rmtree(args.work, ignore_errors=True)
@@ -403,7 +404,8 @@ def test_repack(args):
         runs[name] = proc
     reference = meshio.read_ply(os.path.join(args.work, "reference_out.ply"))
     proc = runs["script"]
-    assert re.search(r"\d+ charts read from the texture coordinates packed again", proc.stdout), "the log says so"
+    assert re.search(r"\d+ charts read from the texture coordinates (packed again|kept where they are)", proc.stdout), \
+        "the log says so"
     result = meshio.read_ply(out)
 
     def triangles(ply):
