@@ -80,9 +80,19 @@ std::vector<std::vector<int>> charts_of_uv(const Eigen::MatrixXi& F, const Eigen
   return charts;
 }
 
-// One chart as its UV gives it: a vertex per distinct (vertex, UV) corner, the UV its map.
+// Whether the chart's UV is mirrored: its faces turn clockwise in UV, by area (as xatlas stores some
+// charts), where the method's run counter-clockwise. Each of them would count as flipped.
+bool is_mirrored(const ChartMesh& mesh, const Eigen::MatrixXd& uv) {
+  double signed_area = 0;
+  for (Eigen::Index j = 0; j < mesh.F.rows(); ++j)
+    signed_area += signed_uv_area(uv.row(mesh.F(j, 0)).transpose(), uv.row(mesh.F(j, 1)).transpose(), uv.row(mesh.F(j, 2)).transpose());
+  return signed_area < 0;
+}
+
+// One chart as its UV gives it: a vertex per distinct (vertex, UV) corner, the UV its map; mirrored
+// back if it is mirrored (the same stretch; its texture is to be made again for the new layout).
 SolvedChart chart_of_uv(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& corner_uv,
-                        std::vector<int> faces) {
+                        std::vector<int> faces, bool& mirrored) {
   std::vector<std::tuple<int, double, double, int>> corners;  // (vertex, u, v, 3 * local face + k)
   for (size_t j = 0; j < faces.size(); ++j)
     for (int k = 0; k < 3; ++k) {
@@ -111,6 +121,8 @@ SolvedChart chart_of_uv(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F,
     chart.map.uv.row(Eigen::Index(i)) = uv[i].transpose();
   }
   mesh.input_face = faces;
+  mirrored = is_mirrored(mesh, chart.map.uv);
+  if (mirrored) chart.map.uv.col(0) *= -1;
   chart.faces = std::move(faces);
   chart.free_boundary = true;  // its own outline, as given
   chart.kept_whole = "its texture coordinates were given";
@@ -159,8 +171,11 @@ ChartsResult repack_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, co
   std::vector<SolvedChart> charts;
   std::vector<int> flat;  // faces of charts with no 3D area: each chart on a point
   long long collapsed = 0;  // faces of charts with 3D area but none in UV: no shape to keep
+  int mirrored = 0;
   for (std::vector<int>& faces : charts_of_uv(F, corner_uv)) {
-    SolvedChart chart = chart_of_uv(unit_V, F, corner_uv, std::move(faces));
+    bool is_mirrored = false;
+    SolvedChart chart = chart_of_uv(unit_V, F, corner_uv, std::move(faces), is_mirrored);
+    mirrored += is_mirrored;
     if (!(chart.kept.area_3d > 0)) flat.insert(flat.end(), chart.faces.begin(), chart.faces.end());
     else if (chart.uv_area() > 0) charts.push_back(std::move(chart));
     else collapsed += (long long)chart.faces.size();
@@ -185,6 +200,11 @@ ChartsResult repack_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, co
   } else {
     result.notes.insert(result.notes.begin(), read + " packed again");
   }
+  if (mirrored > 0)
+    result.notes.insert(result.notes.begin() + 1, std::to_string(mirrored) +
+                                                      (mirrored == 1 ? " chart was mirrored in the texture coordinates (its faces clockwise)"
+                                                                     : " charts were mirrored in the texture coordinates (their faces clockwise)") +
+                                                      ": mirrored back");
   stage = Clock::now();
   result = valid_as_stored(unit_V, F, unit, int(V.rows()), options, std::move(result));
   measure_gutter(options, result);

@@ -1,7 +1,8 @@
 // The pack stage alone: an atlas packed again (another texture size or gutter) without cutting or
 // mapping its charts again. Its charts are read from its texture coordinates: faces joined by an
 // edge whose two corners have the same UV on both sides. Each chart keeps its UV shape (scaled to
-// the one texel density of the new layout, turned by quarter turns, never mirrored) and all are
+// the one texel density of the new layout, turned by quarter turns; one stored mirrored is mirrored
+// back, since its faces would count as flipped) and all are
 // packed by their outlines, then stored and made valid as parameterize_charts's atlas is. Where the
 // layout as given, its charts' bounding square scaled onto the texture, keeps the new gutter and
 // uses the texture at least as well (a tiling, whose rectangles a packing would leave gaps

@@ -169,3 +169,31 @@ TEST(Repack, ALayoutThatKeepsTheNewGutterIsKeptScaledWhereItUsesTheTextureBetter
   EXPECT_NE(packed.notes[0].find("packed again"), std::string::npos) << packed.notes[0];
   EXPECT_GE(least_distance_between_charts(m.F, packed), wider.gutter / wider.texture_size * (1 - 1e-5));
 }
+
+// A chart stored mirrored (its faces clockwise in UV, as xatlas leaves some) is mirrored back and
+// packed whole, as the same chart unmirrored is: not cut into pieces as if every face were flipped.
+TEST(Repack, AMirroredChartIsMirroredBackNotCut) {
+  const testmesh::Mesh m = parts();
+  const ChartsResult before = parameterize_charts(m.V, m.F, ChartOptions());
+  ASSERT_FALSE(before.error) << message(before.error);
+  ChartsResult mirrored = before;
+  int faces = 0;
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+    if (before.face_chart[size_t(f)] == 0) {
+      ++faces;
+      for (int k = 0; k < 3; ++k) mirrored.corner_uv(f, 2 * k) = 1 - before.corner_uv(f, 2 * k);  // u -> 1 - u
+      ASSERT_LT(signed_area(corner(mirrored, f, 0), corner(mirrored, f, 1), corner(mirrored, f, 2)), 0) << "face " << f;
+    }
+  ASSERT_GT(faces, 1);
+  const ChartOptions options = other_texture();
+  const ChartsResult plain = repack_atlas(m.V, m.F, before.corner_uv, options);
+  const ChartsResult after = repack_atlas(m.V, m.F, mirrored.corner_uv, options);
+  ASSERT_FALSE(plain.error) << message(plain.error);
+  ASSERT_FALSE(after.error) << message(after.error);
+  expect_valid_layout(m.F, after, &m.V);
+  EXPECT_EQ(after.charts.size(), before.charts.size());
+  EXPECT_NEAR(after.layout.l2_stretch, plain.layout.l2_stretch, 1e-6 * plain.layout.l2_stretch);
+  EXPECT_NEAR(texture_efficiency(after), texture_efficiency(plain), 0.02 * texture_efficiency(plain));
+  ASSERT_GE(after.notes.size(), 2u);
+  EXPECT_EQ(after.notes[1], "1 chart was mirrored in the texture coordinates (its faces clockwise): mirrored back");
+}
