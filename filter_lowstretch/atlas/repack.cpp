@@ -11,6 +11,9 @@
 
 #include "atlas/base/used_vertices.h"
 #include "atlas/bound/cut_invalid_charts.h"
+#include "atlas/bound/split_until_bounded.h"
+#include "atlas/chart_map/boundary_crossing.h"
+#include "atlas/chart_map/free_charts.h"
 #include "atlas/charts.h"
 #include "atlas/measure/atlas_result.h"
 #include "atlas/measure/valid_as_stored.h"
@@ -132,6 +135,62 @@ SolvedChart chart_of_uv(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F,
   return chart;
 }
 
+// The charts of the texture coordinates as the packing takes them: mirrored ones mirrored back;
+// those with no UV area, or that overlap themselves (their boundary crosses itself, though no face
+// need be flipped: a peer's chart can), charted again as the atlas charts a mesh (cut where they
+// stretch beyond the bound, mapped free where that stretches less), or where that fails a chart
+// per face; charts of no 3D area onto a point (`flat`). Counts what it changed.
+struct ReadCharts {
+  std::vector<SolvedChart> charts;
+  std::vector<int> flat;       // faces of charts with no 3D area: each chart on a point
+  int mirrored = 0, overlapping = 0;
+  long long collapsed = 0;     // faces of charts with 3D area but none in UV: no shape to keep
+  bool any_uv = false;         // whether any chart with 3D area has UV area: an atlas to pack again
+};
+void chart_again(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& corner_uv,
+                 const ChartOptions& options, const std::vector<std::vector<int>>& parts, ReadCharts& read) {
+  std::vector<SolvedChart> charted, uncut;
+  std::vector<std::string> notes;
+  if (!split_until_bounded(unit_V, F, parts, options, charted, uncut, notes)) {
+    free_where_it_stretches_less(charted, options);
+    for (SolvedChart& chart : charted) read.charts.push_back(std::move(chart));
+    return;
+  }
+  for (const std::vector<int>& faces : parts)
+    for (const int f : faces) {
+      bool mirrored = false;
+      SolvedChart face = chart_of_uv(unit_V, F, corner_uv, {f}, mirrored);
+      if (face.kept.area_3d > 0) read.charts.push_back(std::move(face));
+      else read.flat.push_back(f);
+    }
+}
+ReadCharts read_charts(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& corner_uv,
+                       const ChartOptions& options) {
+  ReadCharts read;
+  std::vector<std::vector<int>> again;
+  for (std::vector<int>& faces : charts_of_uv(F, corner_uv)) {
+    bool mirrored = false;
+    SolvedChart chart = chart_of_uv(unit_V, F, corner_uv, std::move(faces), mirrored);
+    read.mirrored += mirrored;
+    if (!(chart.kept.area_3d > 0)) {
+      read.flat.insert(read.flat.end(), chart.faces.begin(), chart.faces.end());
+    } else if (!(chart.uv_area() > 0)) {
+      read.collapsed += (long long)chart.faces.size();
+      again.push_back(chart.faces);
+    } else {
+      read.any_uv = true;
+      if (!uv_boundary_crosses_itself(chart.mesh.F, chart.map.uv, std::numeric_limits<int>::max())) {
+        read.charts.push_back(std::move(chart));
+      } else {
+        ++read.overlapping;
+        again.push_back(chart.faces);
+      }
+    }
+  }
+  if (read.any_uv && !again.empty()) chart_again(unit_V, F, corner_uv, options, again, read);
+  return read;
+}
+
 // The layout as given, its charts' bounding square onto [0,1]^2, measured and stored as a packing
 // is; false where a chart comes closer than the new gutter to another, or a face is invalid.
 bool layout_as_given(const std::vector<SolvedChart>& charts, const std::vector<int>& flat, const Eigen::MatrixXd& corner_uv,
@@ -168,42 +227,43 @@ ChartsResult repack_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, co
   if (Error e = check_input(V, F, corner_uv)) return failed_result(e);
   double unit = 1;
   const Eigen::MatrixXd unit_V = unit_box_of_used(V, F, unit);
-  std::vector<SolvedChart> charts;
-  std::vector<int> flat;  // faces of charts with no 3D area: each chart on a point
-  long long collapsed = 0;  // faces of charts with 3D area but none in UV: no shape to keep
-  int mirrored = 0;
-  for (std::vector<int>& faces : charts_of_uv(F, corner_uv)) {
-    bool is_mirrored = false;
-    SolvedChart chart = chart_of_uv(unit_V, F, corner_uv, std::move(faces), is_mirrored);
-    mirrored += is_mirrored;
-    if (!(chart.kept.area_3d > 0)) flat.insert(flat.end(), chart.faces.begin(), chart.faces.end());
-    else if (chart.uv_area() > 0) charts.push_back(std::move(chart));
-    else collapsed += (long long)chart.faces.size();
-  }
-  if (collapsed > 0 || charts.empty()) return failed_result({ErrorCode::NoTextureCoordinates, collapsed, ""});
+  ReadCharts read = read_charts(unit_V, F, corner_uv, options);
+  std::vector<SolvedChart>& charts = read.charts;
+  std::vector<int>& flat = read.flat;
+  if (!read.any_uv) return failed_result({ErrorCode::NoTextureCoordinates, read.collapsed, ""});
   std::vector<StageSeconds> stages = {{"charts from texture coordinates", seconds_since(start)}};
   Clock::time_point stage = Clock::now();
   std::vector<int> all(charts.size());
   std::iota(all.begin(), all.end(), 0);
   const size_t chart_count = charts.size();
   ChartsResult as_given;
-  const bool keeps_gutter = layout_as_given(charts, flat, corner_uv, unit_V, F, unit, int(V.rows()), options, as_given);
+  // Not where a chart was charted again: the given layout holds its overlap or its collapse.
+  const bool keeps_gutter =
+      read.overlapping == 0 && read.collapsed == 0 && layout_as_given(charts, flat, corner_uv, unit_V, F, unit, int(V.rows()), options, as_given);
   ChartsResult result = atlas_of(std::move(charts), std::move(all), unit_V, F, unit, int(V.rows()), options, std::move(flat));
   if (result.error) return result;
   stages.push_back({"charts packed by outline", seconds_since(stage)});
-  const std::string read = std::to_string(chart_count) + " charts read from the texture coordinates";
+  const std::string read_note = std::to_string(chart_count) + " charts read from the texture coordinates";
   if (keeps_gutter && texture_efficiency(as_given) >= texture_efficiency(result)) {
-    as_given.notes.insert(as_given.notes.begin(), read + " kept where they are, scaled: efficiency " +
+    as_given.notes.insert(as_given.notes.begin(), read_note + " kept where they are, scaled: efficiency " +
                                                       number_text(texture_efficiency(as_given)) + " (coverage / L2^2) against " +
                                                       number_text(texture_efficiency(result)) + " packed again");
     result = std::move(as_given);
   } else {
-    result.notes.insert(result.notes.begin(), read + " packed again");
+    result.notes.insert(result.notes.begin(), read_note + " packed again");
   }
-  if (mirrored > 0)
-    result.notes.insert(result.notes.begin() + 1, std::to_string(mirrored) +
-                                                      (mirrored == 1 ? " chart was mirrored in the texture coordinates (its faces clockwise)"
-                                                                     : " charts were mirrored in the texture coordinates (their faces clockwise)") +
+  if (read.collapsed > 0)
+    result.notes.insert(result.notes.begin() + 1, std::to_string(read.collapsed) +
+                                                      (read.collapsed == 1 ? " face" : " faces") +
+                                                      " of charts with no area in the texture coordinates: charted again");
+  if (read.overlapping > 0)
+    result.notes.insert(result.notes.begin() + 1, std::to_string(read.overlapping) +
+                                                      (read.overlapping == 1 ? " chart overlapped itself" : " charts overlapped themselves") +
+                                                      " in the texture coordinates: charted again");
+  if (read.mirrored > 0)
+    result.notes.insert(result.notes.begin() + 1, std::to_string(read.mirrored) +
+                                                      (read.mirrored == 1 ? " chart was mirrored in the texture coordinates (its faces clockwise)"
+                                                                          : " charts were mirrored in the texture coordinates (their faces clockwise)") +
                                                       ": mirrored back");
   stage = Clock::now();
   result = valid_as_stored(unit_V, F, unit, int(V.rows()), options, std::move(result));

@@ -15,10 +15,11 @@
 namespace lowstretch {
 
 // corner_uv: #F x 6, (u, v) of corners 0, 1, 2 of every face, as the atlas to pack again stores
-// them. A chart of no 3D area is put on a point; a face whose UV folds or collapses is cut out and
-// mapped again, as the atlas's are. Errors: options out of range, bad indices, non-finite
-// coordinates, NoTextureCoordinates (UV missing or not finite, or a chart with 3D area and no UV
-// area: nothing to keep), ChartsNotPacked.
+// them. A chart of no 3D area is put on a point; a chart with no UV area, or whose UV overlaps
+// itself, is charted again as the atlas charts a mesh; a face whose UV folds or collapses is cut
+// out and mapped again, as the atlas's are. Errors: options out of range, bad indices, non-finite
+// coordinates, NoTextureCoordinates (UV missing or not finite, or no chart with UV area: no atlas
+// to pack again), ChartsNotPacked.
 ChartsResult repack_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& corner_uv,
                           const ChartOptions& options);
 

@@ -68,8 +68,8 @@ std::vector<OptionRow> make_table() {
        "Keep the mesh's atlas (its per-wedge texture coordinates, from an earlier run or a file) and only pack "
        "its charts again for Texture size and Gutter: each chart keeps its shape, turned by quarter turns and "
        "scaled to one texel density, packed by its outline; or the layout as it is, scaled onto the texture, "
-       "where that keeps the gutter and uses the texture at least as well. The options for cutting and mapping "
-       "are not used.",
+       "where that keeps the gutter and uses the texture at least as well. Only a chart that overlaps itself or "
+       "has no UV area is cut and mapped again, with the options for cutting and mapping.",
        [](const ChartOptions& o) { return double(o.repack); }, [](ChartOptions& o, double v) { o.repack = v != 0; }},
       {"refine", "--refine", "refineStretch", "Refine stretch", OptionKind::Switch, {}, {}, "", kToolAndFilter,
        "After the paper's passes, lower the L2 stretch further by minimizing it directly (projected Newton, "

@@ -197,3 +197,59 @@ TEST(Repack, AMirroredChartIsMirroredBackNotCut) {
   ASSERT_GE(after.notes.size(), 2u);
   EXPECT_EQ(after.notes[1], "1 chart was mirrored in the texture coordinates (its faces clockwise): mirrored back");
 }
+
+// A chart given overlapping itself with no face flipped (a flat strip curled one and a quarter
+// turns round in UV, as a peer's long chart can come) is charted again: valid, no pixel covered
+// twice, its stretch near the strip's own (none), and a note says so.
+TEST(Repack, AChartThatOverlapsItselfIsChartedAgain) {
+  const int along = 60;
+  testmesh::Mesh strip;
+  strip.V.resize(2 * (along + 1), 3);
+  Eigen::MatrixXd uv(strip.V.rows(), 2);
+  for (int i = 0; i <= along; ++i)
+    for (int j = 0; j < 2; ++j) {
+      const double turn = 2.5 * M_PI * i / along, radius = 1.0 - 0.2 * j;  // inward with j: counter-clockwise
+      strip.V.row(2 * i + j) << 2.5 * M_PI * 0.9 * i / along, 0.2 * j, 0;
+      uv.row(2 * i + j) << 0.5 + 0.4 * radius * std::cos(turn), 0.5 + 0.4 * radius * std::sin(turn);
+    }
+  strip.F.resize(2 * along, 3);
+  for (int i = 0; i < along; ++i) {
+    strip.F.row(2 * i) << 2 * i, 2 * i + 2, 2 * i + 3;
+    strip.F.row(2 * i + 1) << 2 * i, 2 * i + 3, 2 * i + 1;
+  }
+  ChartsResult given;
+  given.corner_uv.resize(strip.F.rows(), 6);
+  for (Eigen::Index f = 0; f < strip.F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) given.corner_uv.block(f, 2 * k, 1, 2) = uv.row(strip.F(f, k));
+  for (Eigen::Index f = 0; f < strip.F.rows(); ++f)
+    ASSERT_GT(signed_area(corner(given, f, 0), corner(given, f, 1), corner(given, f, 2)), 0) << "face " << f;
+  given.charts.resize(1);
+  ASSERT_GT(overlapping_pixels(given), 0);  // the curl's last quarter turn lies on its first
+  const ChartsResult after = repack_atlas(strip.V, strip.F, given.corner_uv, ChartOptions());
+  ASSERT_FALSE(after.error) << message(after.error);
+  expect_valid_layout(strip.F, after, &strip.V);
+  EXPECT_LT(after.layout.l2_stretch, 1.05);
+  ASSERT_GE(after.notes.size(), 2u);
+  EXPECT_EQ(after.notes[1], "1 chart overlapped itself in the texture coordinates: charted again");
+}
+
+// A chart whose texture coordinates all sit on one point (a peer's collapsed chart) has no shape to
+// keep: charted again, the rest packed as given; refused only where no chart has UV area.
+TEST(Repack, AChartWithNoUvAreaIsChartedAgain) {
+  const testmesh::Mesh m = parts();
+  ChartsResult before = parameterize_charts(m.V, m.F, ChartOptions());
+  ASSERT_FALSE(before.error) << message(before.error);
+  int faces = 0;
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+    if (before.face_chart[size_t(f)] == 1) {
+      ++faces;
+      for (int k = 0; k < 3; ++k) before.corner_uv.block(f, 2 * k, 1, 2) << 0.25, 0.75;
+    }
+  ASSERT_GT(faces, 1);
+  const ChartsResult after = repack_atlas(m.V, m.F, before.corner_uv, ChartOptions());
+  ASSERT_FALSE(after.error) << message(after.error);
+  expect_valid_layout(m.F, after, &m.V);
+  EXPECT_LT(after.layout.l2_stretch, ChartOptions().max_stretch);
+  ASSERT_GE(after.notes.size(), 2u);
+  EXPECT_EQ(after.notes[1], std::to_string(faces) + " faces of charts with no area in the texture coordinates: charted again");
+}

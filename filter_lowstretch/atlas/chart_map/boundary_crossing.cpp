@@ -33,6 +33,7 @@ bool segments_meet(const Eigen::RowVector2d& a, const Eigen::RowVector2d& b, con
 }  // namespace
 
 bool uv_boundary_crosses_itself(const Eigen::MatrixXi& F, const Eigen::MatrixXd& uv, int most_edges) {
+  if (!uv.allFinite()) return true;  // no map to trust (and the sweep below needs ordered numbers)
   // A fan that winds past a full turn at a boundary vertex overlaps itself there, though no two of
   // its boundary edges cross (the two that overlap share that vertex).
   std::vector<double> turn(size_t(uv.rows()), 0);
@@ -47,12 +48,17 @@ bool uv_boundary_crosses_itself(const Eigen::MatrixXi& F, const Eigen::MatrixXd&
   for (int h = 0; h < int(twin.size()); ++h)
     if (twin[size_t(h)] < 0) edges.push_back({half_edge_tail(F, h), half_edge_head(F, h)});
   if (int(edges.size()) > most_edges) return true;
-  for (size_t i = 0; i < edges.size(); ++i)
-    for (size_t j = i + 1; j < edges.size(); ++j) {
+  // Swept along u: only edges whose u-ranges overlap can meet.
+  const auto low_u = [&](const std::array<int, 2>& e) { return std::min(uv(e[0], 0), uv(e[1], 0)); };
+  std::sort(edges.begin(), edges.end(), [&](const std::array<int, 2>& e, const std::array<int, 2>& f) { return low_u(e) < low_u(f); });
+  for (size_t i = 0; i < edges.size(); ++i) {
+    const double high_u = std::max(uv(edges[i][0], 0), uv(edges[i][1], 0));
+    for (size_t j = i + 1; j < edges.size() && low_u(edges[j]) <= high_u; ++j) {
       const int a = edges[i][0], b = edges[i][1], c = edges[j][0], d = edges[j][1];
       if (a == c || a == d || b == c || b == d) continue;  // neighbours along the boundary
       if (segments_meet(uv.row(a), uv.row(b), uv.row(c), uv.row(d))) return true;
     }
+  }
   return false;
 }
 

@@ -9,8 +9,9 @@ namespace lowstretch {
 
 // F: the chart's faces; uv: a row per vertex. True if two boundary edges that share no vertex
 // touch or cross in uv, or if the angles at a vertex add up to more than a full turn (two fans
-// through one vertex, as a pinched boundary has, overlapping each other). Quadratic in the boundary edges: meant for the small charts a free
-// boundary is tried on (callers skip it above `most_edges`, returning true).
+// through one vertex, as a pinched boundary has, overlapping each other). The edges are swept
+// along u, so that only those whose u-ranges overlap are tested; callers that try a free boundary
+// on small charts only skip it above `most_edges`, returning true.
 bool uv_boundary_crosses_itself(const Eigen::MatrixXi& F, const Eigen::MatrixXd& uv, int most_edges = 4000);
 
 }  // namespace lowstretch
