@@ -87,8 +87,10 @@ std::vector<std::vector<int>> charts_of_uv(const Eigen::MatrixXi& F, const Eigen
 // charts), where the method's run counter-clockwise. Each of them would count as flipped.
 bool is_mirrored(const ChartMesh& mesh, const Eigen::MatrixXd& uv) {
   double signed_area = 0;
-  for (Eigen::Index j = 0; j < mesh.F.rows(); ++j)
-    signed_area += signed_uv_area(uv.row(mesh.F(j, 0)).transpose(), uv.row(mesh.F(j, 1)).transpose(), uv.row(mesh.F(j, 2)).transpose());
+  for (Eigen::Index j = 0; j < mesh.F.rows(); ++j) {
+    const auto at = [&](int k) { return Eigen::Vector2d(uv.row(mesh.F(j, k)).transpose()); };
+    signed_area += signed_uv_area(at(0), at(1), at(2));
+  }
   return signed_area < 0;
 }
 
@@ -139,10 +141,12 @@ SolvedChart chart_of_uv(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F,
 // those with no UV area, or that overlap themselves (their boundary crosses itself, though no face
 // need be flipped: a peer's chart can), charted again as the atlas charts a mesh (cut where they
 // stretch beyond the bound, mapped free where that stretches less), or where that fails a chart
-// per face; charts of no 3D area onto a point (`flat`). Counts what it changed.
+// per face (a face of no UV area among the flat ones, which the last step, valid_as_stored, gives
+// a triangle of its own); charts of no 3D area onto a point (`flat`). Counts what it changed.
 struct ReadCharts {
   std::vector<SolvedChart> charts;
   std::vector<int> flat;       // faces of charts with no 3D area: each chart on a point
+  int read = 0;               // charts in the texture coordinates
   int mirrored = 0, overlapping = 0;
   long long collapsed = 0;     // faces of charts with 3D area but none in UV: no shape to keep
   bool any_uv = false;         // whether any chart with 3D area has UV area: an atlas to pack again
@@ -160,7 +164,7 @@ void chart_again(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const 
     for (const int f : faces) {
       bool mirrored = false;
       SolvedChart face = chart_of_uv(unit_V, F, corner_uv, {f}, mirrored);
-      if (face.kept.area_3d > 0) read.charts.push_back(std::move(face));
+      if (face.kept.area_3d > 0 && face.uv_area() > 0) read.charts.push_back(std::move(face));
       else read.flat.push_back(f);
     }
 }
@@ -171,6 +175,7 @@ ReadCharts read_charts(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, 
   for (std::vector<int>& faces : charts_of_uv(F, corner_uv)) {
     bool mirrored = false;
     SolvedChart chart = chart_of_uv(unit_V, F, corner_uv, std::move(faces), mirrored);
+    ++read.read;
     read.mirrored += mirrored;
     if (!(chart.kept.area_3d > 0)) {
       read.flat.insert(read.flat.end(), chart.faces.begin(), chart.faces.end());
@@ -235,15 +240,14 @@ ChartsResult repack_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, co
   Clock::time_point stage = Clock::now();
   std::vector<int> all(charts.size());
   std::iota(all.begin(), all.end(), 0);
-  const size_t chart_count = charts.size();
   ChartsResult as_given;
   // Not where a chart was charted again: the given layout holds its overlap or its collapse.
-  const bool keeps_gutter =
-      read.overlapping == 0 && read.collapsed == 0 && layout_as_given(charts, flat, corner_uv, unit_V, F, unit, int(V.rows()), options, as_given);
+  const bool keeps_gutter = read.overlapping == 0 && read.collapsed == 0 &&
+                            layout_as_given(charts, flat, corner_uv, unit_V, F, unit, int(V.rows()), options, as_given);
   ChartsResult result = atlas_of(std::move(charts), std::move(all), unit_V, F, unit, int(V.rows()), options, std::move(flat));
   if (result.error) return result;
   stages.push_back({"charts packed by outline", seconds_since(stage)});
-  const std::string read_note = std::to_string(chart_count) + " charts read from the texture coordinates";
+  const std::string read_note = std::to_string(read.read) + " charts read from the texture coordinates";
   if (keeps_gutter && texture_efficiency(as_given) >= texture_efficiency(result)) {
     as_given.notes.insert(as_given.notes.begin(), read_note + " kept where they are, scaled: efficiency " +
                                                       number_text(texture_efficiency(as_given)) + " (coverage / L2^2) against " +
@@ -252,19 +256,13 @@ ChartsResult repack_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, co
   } else {
     result.notes.insert(result.notes.begin(), read_note + " packed again");
   }
-  if (read.collapsed > 0)
-    result.notes.insert(result.notes.begin() + 1, std::to_string(read.collapsed) +
-                                                      (read.collapsed == 1 ? " face" : " faces") +
-                                                      " of charts with no area in the texture coordinates: charted again");
-  if (read.overlapping > 0)
-    result.notes.insert(result.notes.begin() + 1, std::to_string(read.overlapping) +
-                                                      (read.overlapping == 1 ? " chart overlapped itself" : " charts overlapped themselves") +
-                                                      " in the texture coordinates: charted again");
-  if (read.mirrored > 0)
-    result.notes.insert(result.notes.begin() + 1, std::to_string(read.mirrored) +
-                                                      (read.mirrored == 1 ? " chart was mirrored in the texture coordinates (its faces clockwise)"
-                                                                          : " charts were mirrored in the texture coordinates (their faces clockwise)") +
-                                                      ": mirrored back");
+  const auto note = [&](long long count, const char* one, const char* many, const char* done) {
+    if (count > 0) result.notes.insert(result.notes.begin() + 1, std::to_string(count) + (count == 1 ? one : many) + done);
+  };
+  note(read.collapsed, " face", " faces", " of charts with no area in the texture coordinates: charted again");
+  note(read.overlapping, " chart overlapped itself", " charts overlapped themselves", " in the texture coordinates: charted again");
+  note(read.mirrored, " chart was mirrored in the texture coordinates (its faces clockwise)",
+       " charts were mirrored in the texture coordinates (their faces clockwise)", ": mirrored back");
   stage = Clock::now();
   result = valid_as_stored(unit_V, F, unit, int(V.rows()), options, std::move(result));
   measure_gutter(options, result);
