@@ -7,12 +7,10 @@
 
 #include "atlas/base/used_vertices.h"
 #include "atlas/bound/cut_invalid_charts.h"
-#include "atlas/cut/split_vertex_fans.h"
-#include "atlas/cut/weld_duplicates.h"
-#include "atlas/cut/zero_area_parts.h"
 #include "atlas/measure/atlas_result.h"
 #include "atlas/measure/least_gutter.h"
 #include "atlas/measure/valid_as_stored.h"
+#include "atlas/prepare/prepare_input.h"
 #include "atlas/search/make_atlas.h"
 #include "core/disk_mesh.h"
 
@@ -59,49 +57,6 @@ ChartsResult from_disk(const Eigen::MatrixXi& F, Result disk) {
   return result;
 }
 
-// The errors that a manifold copy of the mesh gets past (several components: when parts touch
-// at a vertex, that is found after the components).
-bool manifold_copy_helps(ErrorCode code) {
-  return code == ErrorCode::NonManifoldVertices || code == ErrorCode::SeveralComponents ||
-         code == ErrorCode::NonManifoldEdges || code == ErrorCode::InconsistentOrientation ||
-         code == ErrorCode::RepeatedVertexInFace;
-}
-
-std::string count_text(int count, const char* one, const char* many) {
-  return std::to_string(count) + " " + (count == 1 ? one : many);
-}
-
-
-// A triangle soup (each face with vertices of its own, as STL stores them): half or more of the
-// used vertices sit on another. Welding it, not cutting it, is the way out (as parameterize says).
-bool is_unwelded(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
-  const Eigen::MatrixXd used = used_rows(V, F);
-  return used.allFinite() && 2 * vertices_on_others(used) >= used.rows();  // NaN: refused later
-}
-
-// What the manifold copy changed, one note per kind of defect.
-std::vector<std::string> split_notes(const SplitFans& split) {
-  struct Defect {
-    int count;
-    const char *one, *many, *done;
-  };
-  const Defect defects[] = {
-      {split.non_manifold_edges, "non-manifold edge", "non-manifold edges", " (shared by more than two faces) cut open"},
-      {split.misoriented_edges, "edge", "edges", " between faces of opposite orientation cut open"},
-      {split.repeated_vertex_faces, "face names", "faces name", " a vertex twice (zero area): given corners of their own"},
-      {split.split_vertices, "non-manifold vertex", "non-manifold vertices",
-       " (where parts, holes or cut edges touch) split per fan of faces"}};
-  std::vector<std::string> notes;
-  for (const Defect& d : defects)
-    if (d.count > 0) notes.push_back(count_text(d.count, d.one, d.many) + d.done + " for the charts; the mesh is unchanged");
-  return notes;
-}
-
-// parameterize_charts; `own_copies`: V holds copies of vertices made for a manifold copy, which
-// are no sign of an unwelded mesh.
-ChartsResult disk_or_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options, bool own_copies);
-
-
 // parameterize's map of a disk as one chart, stored and measured as MeshLab holds it.
 ChartsResult disk_result(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options, Result whole,
                          const Eigen::MatrixXd& unit_V, Clock::time_point start) {
@@ -113,36 +68,6 @@ ChartsResult disk_result(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, con
   const PassMetrics measured = result.layout;
   result.layout = result.disk_passes.at(size_t(result.chosen_pass));
   copy_measures(measured, result.layout);
-  result.seconds_total = seconds_since(start);
-  return result;
-}
-
-// A mesh that is not manifold or not consistently oriented: the charts are made on a manifold
-// copy (split_vertex_fans.h), cut open along its bad edges and split at its bad vertices.
-ChartsResult on_manifold_copy(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options,
-                              const SplitFans& split, Clock::time_point start) {
-  if (is_unwelded(V, F)) return failed_result({ErrorCode::UnweldedVertices, vertices_on_others(used_rows(V, F)), ""});
-  ChartsResult result = disk_or_atlas(split.V, split.F, options, true);
-  if (result.error) return result;
-  result.vertex_stretch = join_vertex_values(split, result.vertex_stretch, int(V.rows()));
-  const std::vector<std::string> notes = split_notes(split);
-  result.notes.insert(result.notes.begin(), notes.begin(), notes.end());
-  result.seconds_total = seconds_since(start);
-  return result;
-}
-
-// Parts of zero 3D area have nothing to map: the atlas is made of the other parts.
-ChartsResult without_zero_area_parts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options,
-                                     bool own_copies, const std::vector<int>& zero_area, Clock::time_point start) {
-  std::vector<int> mapped;
-  for (Eigen::Index f = 0, z = 0; f < F.rows(); ++f)
-    if (size_t(z) < zero_area.size() && zero_area[size_t(z)] == f) ++z;
-    else mapped.push_back(int(f));
-  Eigen::MatrixXi mapped_F(Eigen::Index(mapped.size()), 3);
-  for (size_t j = 0; j < mapped.size(); ++j) mapped_F.row(Eigen::Index(j)) = F.row(mapped[j]);
-  ChartsResult result = disk_or_atlas(V, mapped_F, options, own_copies);
-  if (result.error) return result;
-  result = with_zero_area_faces(std::move(result), V, F, mapped, zero_area, options);
   result.seconds_total = seconds_since(start);
   return result;
 }
@@ -185,52 +110,22 @@ ChartsResult disk_or_atlas_of_whole(const Eigen::MatrixXd& V, const Eigen::Matri
   return atlas;
 }
 
-// A mesh with duplicate vertices: the charts made with them welded (weld_duplicates.h), each
-// duplicate taking the stretch of the vertex it was welded onto; an error if that fails.
-ChartsResult on_welded_copy(const Eigen::MatrixXd& V, const ChartOptions& options, const WeldedFaces& welded,
-                            Clock::time_point start) {
-  ChartsResult result = disk_or_atlas(V, welded.F, options, true);
-  if (result.error) return result;
-  for (size_t v = 0; v < welded.onto.size(); ++v)
-    if (welded.onto[v] != int(v) && Eigen::Index(v) < result.vertex_stretch.size())
-      result.vertex_stretch(Eigen::Index(v)) = result.vertex_stretch(welded.onto[v]);
-  result.notes.insert(result.notes.begin(), count_text(welded.welded, "duplicate vertex", "duplicate vertices") +
-                                                " (on another vertex's position) welded for the charts; the mesh is unchanged");
-  result.seconds_total = seconds_since(start);
-  return result;
-}
-
-ChartsResult disk_or_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options, bool own_copies) {
+// The input prepared (prepare_input.h), charted, and the charts given back for the input. Where the
+// welded copy's charts fail, the input is charted without welding.
+ChartsResult disk_or_atlas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options) {
   const Clock::time_point start = Clock::now();
-  Result whole = parameterize(V, F, options.disk);
-  if (own_copies && whole.error.code == ErrorCode::UnweldedVertices) whole.error = {ErrorCode::SeveralComponents, 0, ""};
-  // Not a disk: duplicates welded first (a disk keeps its seams; a soup is refused below, as the
-  // manifold copy cannot help it). Copies the manifold copy made are not duplicates.
-  if (!own_copies && options.non_disk != NonDisk::Reject && whole.error && charts_would_help(whole.error.code) &&
-      !is_unwelded(V, F)) {
-    const WeldedFaces welded = weld_duplicate_vertices(V, F);
-    // Not where welding joins more faces on an edge than two, or two running it the same way: those
-    // are parts that touch, or the two sides of a double-sided sheet, each better charted alone.
-    const auto bad_edges = [&](const Eigen::MatrixXi& faces) {
-      const SplitFans split = split_vertex_fans(V, faces);
-      return split.non_manifold_edges + split.misoriented_edges;
-    };
-    if (welded.welded > 0 && bad_edges(welded.F) <= bad_edges(F)) {
-      ChartsResult result = on_welded_copy(V, options, welded, start);
-      if (!result.error) return result;
-    }
+  ChartsResult result;
+  for (const bool may_weld : {true, false}) {
+    PreparedInput prepared = prepare_input(V, F, options, may_weld);
+    result = prepared.error ? failed_result(prepared.error)
+                            : disk_or_atlas_of_whole(prepared.V, prepared.F, options, std::move(prepared.whole), start);
+    result = give_back(prepared, std::move(result), options);
+    if (!result.error && !prepared.steps.empty()) result.seconds_total = seconds_since(start);
+    const bool welded = std::any_of(prepared.steps.begin(), prepared.steps.end(),
+                                    [](const PrepareStep& step) { return step.kind == PrepareStep::Kind::Weld; });
+    if (!result.error || !welded) break;
   }
-  if (options.non_disk != NonDisk::Reject && manifold_copy_helps(whole.error.code)) {
-    const SplitFans split = split_vertex_fans(V, F);
-    if (split.new_vertices > 0) return on_manifold_copy(V, F, options, split, start);
-  }
-  if (options.non_disk != NonDisk::Reject && whole.error.code == ErrorCode::SeveralComponents) {
-    double unit = 1;
-    const std::vector<int> zero_area = faces_of_zero_area_parts(unit_box_of_used(V, F, unit), F);
-    if (!zero_area.empty() && Eigen::Index(zero_area.size()) < F.rows())
-      return without_zero_area_parts(V, F, options, own_copies, zero_area, start);
-  }
-  return disk_or_atlas_of_whole(V, F, options, std::move(whole), start);
+  return result;
 }
 
 }  // namespace
@@ -245,7 +140,7 @@ bool charts_would_help(ErrorCode code) { return cutting_into_disks_fixes(code) |
 
 ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options) {
   if (Error e = check_chart_options(options)) return failed_result(e);
-  ChartsResult result = disk_or_atlas(V, F, options, false);
+  ChartsResult result = disk_or_atlas(V, F, options);
   if (result.error) return result;
   double unit = 1;
   const Eigen::MatrixXd unit_V = unit_box_of_used(V, F, unit);

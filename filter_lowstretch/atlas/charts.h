@@ -6,9 +6,11 @@
 //   bound/     cutting the charts that stretch more than the bound, or whose map is invalid;
 //   pack/      the rectangles tiling the texture, small charts in the texels left empty;
 //   measure/   the layout stored and measured as MeshLab holds it;
+//   prepare/   the input made ready once, up front (welded duplicates, a manifold copy, parts of
+//              zero area left out), and the charts of what was charted given back for the input;
 //   search/    the candidate atlases, each cut, mapped, laid out and measured, the best kept.
-// This file is the entry point: it prepares the input (a disk's own map, welded duplicates, a
-// manifold copy, parts of zero area left out; charts.cpp) and hands the rest to search/.
+// This file is the entry point: it prepares the input, keeps a disk's own map where that is
+// better (charts.cpp), hands the rest to search/, and checks the result as it is stored.
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/Geometry>

@@ -2,7 +2,7 @@
 """No include runs from a lower layer of filter_lowstretch/ to a higher one.
 
 Layers, lowest first: core, then the atlas stages (base, cut, chart_map, bound, pack, measure,
-search, then atlas/charts.*), then what the tool and both filters share (plugin_common, vcg_arrays), then
+prepare, search, then atlas/charts.*), then what the tool and both filters share (plugin_common, vcg_arrays), then
 the tool and the two MeshLab adapters. Usage: include_layers.py REPOSITORY_ROOT
 """
 import pathlib
@@ -10,7 +10,7 @@ import re
 import sys
 
 LAYERS = ["core", "atlas/base", "atlas/cut", "atlas/chart_map", "atlas/bound", "atlas/pack", "atlas/measure",
-          "atlas/search", "atlas", "vcg_arrays", "plugin_common", "tool", "meshlab2020", "meshlab2025"]
+          "atlas/prepare", "atlas/search", "atlas", "vcg_arrays", "plugin_common", "tool", "meshlab2020", "meshlab2025"]
 # The adapters and the tool sit side by side: none includes another.
 SIDE_BY_SIDE = {"tool", "meshlab2020", "meshlab2025"}
 
