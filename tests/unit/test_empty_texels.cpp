@@ -329,3 +329,29 @@ TEST(PackByOutline, ARepairRoundKeepsTheChartsNotCutWhereTheyWere) {
   ChartsResult none;
   EXPECT_FALSE(lay_out_around(next, wide, last.corner_uv, was, none));
 }
+
+// A ring and a square of more area than the ring that fits into its hole: placed largest first,
+// the square takes the room the ring needs beside it; placed longest box first, the ring goes
+// first and the square into its hole, at a texel density about twice as high.
+TEST(PackByOutline, AChartGoesIntoARingsHoleWhereThatFitsDenser) {
+  testmesh::Mesh m = testmesh::joined(testmesh::punched_grid(24, {{0.5, 0.5}}, 0.45), testmesh::grid(4), 0.62,
+                                      Eigen::RowVector3d(3, 0, 0));
+  int count = 0;
+  const std::vector<int> component = face_components(m.F, count);
+  ASSERT_EQ(count, 2);
+  std::vector<std::vector<int>> faces(2);
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f) faces[size_t(component[size_t(f)])].push_back(int(f));
+  const std::vector<SolvedChart> charts = {solved_chart_of(m, faces[0]), solved_chart_of(m, faces[1])};
+  ASSERT_GT(charts[1].kept.area_3d, charts[0].kept.area_3d) << "the square is the larger chart";
+  double density = 0;
+  EXPECT_GT(check_packing(m, charts, ChartOptions(), density), 0.4) << "side by side, they cover less than a quarter";
+  ChartsResult r;
+  r.corner_uv = Eigen::MatrixXd::Constant(m.F.rows(), 6, -7);
+  r.face_chart.assign(size_t(m.F.rows()), -1);
+  ASSERT_TRUE(pack_by_outline(charts, ChartOptions(), r.corner_uv, r.face_chart, density));
+  Eigen::AlignedBox2d ring, square;
+  for (size_t c = 0; c < 2; ++c)
+    for (const int f : faces[c])
+      for (int k = 0; k < 3; ++k) (c == 0 ? ring : square).extend(corner(r, f, k));
+  EXPECT_TRUE(ring.contains(square)) << "the square inside the ring's box";
+}

@@ -139,11 +139,15 @@ TEST(Repack, APartOfNoAreaSitsOnAPoint) {
 // at least as well as a packing, it is kept: the whole layout moves by one scale and shift.
 TEST(Repack, ALayoutThatKeepsTheNewGutterIsKeptScaledWhereItUsesTheTextureBetter) {
   const testmesh::Mesh m = parts();
-  const ChartsResult before = parameterize_charts(m.V, m.F, ChartOptions());
+  const ChartsResult atlas = parameterize_charts(m.V, m.F, ChartOptions());
+  ASSERT_FALSE(atlas.error) << message(atlas.error);
+  const ChartsResult before = repack_atlas(m.V, m.F, atlas.corner_uv, ChartOptions());  // as the packer lays them out
   ASSERT_FALSE(before.error) << message(before.error);
-  ChartOptions twice;  // the same share of the texture between charts
-  twice.texture_size = 2048;
-  twice.gutter = 4;
+  // The same share of the texture between charts, on half the texels a side: packed on them, the
+  // charts cannot use it as well as the layout made on twice as many.
+  ChartOptions twice;
+  twice.texture_size = 512;
+  twice.gutter = 1;
   const ChartsResult after = repack_atlas(m.V, m.F, before.corner_uv, twice);
   ASSERT_FALSE(after.error) << message(after.error);
   expect_valid_layout(m.F, after, &m.V);

@@ -158,6 +158,20 @@ std::vector<int> larger_first(const std::vector<SolvedChart>& charts, std::vecto
   return order;
 }
 
+// Longest box side sum first, at one texel density (the order xatlas packs in): a ring or a long
+// strip, large for its area, is placed while there is room for it, and smaller charts then fill
+// its hole or run beside it.
+std::vector<int> longer_box_first(const std::vector<SolvedChart>& charts, std::vector<int> order) {
+  std::vector<double> sides(charts.size(), 0);
+  for (const int i : order) {
+    const SolvedChart& c = charts[size_t(i)];
+    const double own = c.uv_area();
+    if (own > 0) sides[size_t(i)] = c.box.sizes().sum() * std::sqrt(c.kept.area_3d / own);
+  }
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return sides[size_t(a)] > sides[size_t(b)]; });
+  return order;
+}
+
 // The densest layout the grid holds, to a ratio of 2^(1/2^bisections), or 0 if none: at `full`
 // the charts would cover every cell. `fits(density)` lays the charts out; the last call that
 // returned true is at the density returned.
@@ -212,15 +226,15 @@ bool pack_by_outline(const std::vector<SolvedChart>& charts, const ChartOptions&
   empty.take_border(frame.gutter);
   std::vector<int> all(charts.size());
   std::iota(all.begin(), all.end(), 0);
-  const std::vector<int> order = larger_first(charts, all);
+  const std::array<std::vector<int>, 2> orders{{larger_first(charts, all), longer_box_first(charts, all)}};
   double area_3d = 0;
   for (const SolvedChart& c : charts) area_3d += c.kept.area_3d;
   const double inside = frame.side - 2.0 * frame.gutter;
   if (!(area_3d > 0) || !(inside > 0)) return false;
   Eigen::MatrixXd best_uv;
   std::vector<int> best_chart;
-  // Either way of choosing a turning: each fills some layouts better than the other. Both are
-  // tried at once on the thread pool; the lowest bottom is kept where both fit.
+  // Either order, and either way of choosing a turning: each fills some layouts better than the
+  // others. All four are tried at once on the thread pool; the first that fits is kept.
   struct Try {
     Eigen::MatrixXd corner_uv;
     std::vector<int> face_chart;
@@ -229,12 +243,14 @@ bool pack_by_outline(const std::vector<SolvedChart>& charts, const ChartOptions&
   const auto fits = [&](double at) {
     Outlines outlines(charts, at, frame.side);
     outlines.draw_all();
-    std::array<Try, 2> tries{{{corner_uv, face_chart}, {corner_uv, face_chart}}};
-    for_each_index(2, [&](int i, int) {
+    std::array<Try, 4> tries;
+    for_each_index(int(tries.size()), [&](int i, int) {
       TexelGrid grid = empty;
       Try& t = tries[size_t(i)];
-      t.fits = place_in_order(charts, order, outlines, frame, i == 0 ? Lowest::Bottom : Lowest::Top, true, grid, t.corner_uv,
-                              t.face_chart).empty();
+      t.corner_uv = corner_uv;
+      t.face_chart = face_chart;
+      t.fits = place_in_order(charts, orders[size_t(i / 2)], outlines, frame, i % 2 == 0 ? Lowest::Bottom : Lowest::Top, true,
+                              grid, t.corner_uv, t.face_chart).empty();
     });
     for (Try& t : tries)
       if (t.fits) {

@@ -42,9 +42,10 @@ std::vector<int> put_in_empty_texels(const std::vector<SolvedChart>& charts, con
                                      const ChartOptions& options, Eigen::MatrixXd& corner_uv, std::vector<int>& face_chart);
 
 // The whole layout by outline: every chart placed as a guest is, on a grid with nothing else, at
-// the highest texel density at which all fit (a bisection of kTuning.packing_bisections steps),
-// each chart turned so that its place has the lowest bottom or, where that does not fit them all,
-// the lowest top. Free charts and charts with holes fit into each other; rectangles keep their
+// the highest texel density at which all fit (a bisection of kTuning.packing_bisections steps):
+// placed largest first or, where that does not fit them all, longest box first (as xatlas orders
+// charts), each turned so that its place has the lowest bottom or, where that does not fit them
+// all, the lowest top. Free charts and charts with holes fit into each other; rectangles keep their
 // own shape. False if even a tiny density leaves a chart without room (corner_uv and face_chart
 // then mean nothing). density: in, 0 or one that held nearly these charts (the search starts
 // there); out, the layout's (grid cells^2 per unit of 3D area).
