@@ -233,8 +233,9 @@ bool pack_by_outline(const std::vector<SolvedChart>& charts, const ChartOptions&
   if (!(area_3d > 0) || !(inside > 0)) return false;
   Eigen::MatrixXd best_uv;
   std::vector<int> best_chart;
-  // Either order, and either way of choosing a turning: each fills some layouts better than the
-  // others. All four are tried at once on the thread pool; the first that fits is kept.
+  // Either way of choosing a turning, each order: each fills some layouts better than the others.
+  // The two turnings of an order are tried at once on the thread pool, the box order only where
+  // the larger-first order leaves a chart without room; the first try that fits is kept.
   struct Try {
     Eigen::MatrixXd corner_uv;
     std::vector<int> face_chart;
@@ -243,21 +244,21 @@ bool pack_by_outline(const std::vector<SolvedChart>& charts, const ChartOptions&
   const auto fits = [&](double at) {
     Outlines outlines(charts, at, frame.side);
     outlines.draw_all();
-    std::array<Try, 4> tries;
-    for_each_index(int(tries.size()), [&](int i, int) {
-      TexelGrid grid = empty;
-      Try& t = tries[size_t(i)];
-      t.corner_uv = corner_uv;
-      t.face_chart = face_chart;
-      t.fits = place_in_order(charts, orders[size_t(i / 2)], outlines, frame, i % 2 == 0 ? Lowest::Bottom : Lowest::Top, true,
-                              grid, t.corner_uv, t.face_chart).empty();
-    });
-    for (Try& t : tries)
-      if (t.fits) {
-        best_uv = std::move(t.corner_uv);
-        best_chart = std::move(t.face_chart);
-        return true;
-      }
+    for (const std::vector<int>& order : orders) {
+      std::array<Try, 2> tries{{{corner_uv, face_chart}, {corner_uv, face_chart}}};
+      for_each_index(2, [&](int i, int) {
+        TexelGrid grid = empty;
+        Try& t = tries[size_t(i)];
+        t.fits = place_in_order(charts, order, outlines, frame, i == 0 ? Lowest::Bottom : Lowest::Top, true, grid, t.corner_uv,
+                                t.face_chart).empty();
+      });
+      for (Try& t : tries)
+        if (t.fits) {
+          best_uv = std::move(t.corner_uv);
+          best_chart = std::move(t.face_chart);
+          return true;
+        }
+    }
     return false;
   };
   const double full = inside * inside / area_3d;
