@@ -12,7 +12,6 @@
 #include "atlas/measure/valid_as_stored.h"
 #include "atlas/prepare/prepare_input.h"
 #include "atlas/search/make_atlas.h"
-#include "core/disk_mesh.h"
 
 namespace lowstretch {
 
