@@ -135,8 +135,6 @@ void measure_gutter(const ChartOptions& options, ChartsResult& result) {
   result.least_gutter = least_gutter(result.corner_uv, result.face_chart, 2 * options.gutter * texel) / texel;
 }
 
-bool charts_would_help(ErrorCode code) { return cutting_into_disks_fixes(code) || manifold_copy_helps(code); }
-
 ChartsResult parameterize_charts(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ChartOptions& options) {
   if (Error e = check_chart_options(options)) return failed_result(e);
   ChartsResult result = disk_or_atlas(V, F, options);

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "atlas/base/atlas_types.h"
+#include "atlas/prepare/prepare_input.h"  // charts_would_help
 #include "core/parameterize.h"
 
 namespace lowstretch {
@@ -34,10 +35,6 @@ void measure_gutter(const ChartOptions& options, ChartsResult& result);
 
 // The options' values in range (InvalidOption names the first that is not).
 Error check_chart_options(const ChartOptions& options);
-
-// Whether making charts gets past this error of the disk check (a cut into disks or a manifold copy
-// fixes it): the caller then adds how its user asks for charts.
-bool charts_would_help(ErrorCode code);
 
 
 }  // namespace lowstretch

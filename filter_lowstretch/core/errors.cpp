@@ -8,7 +8,7 @@ namespace {
 std::string n(long long v) { return std::to_string(v); }
 std::string plural(long long v, const char* one, const char* many) { return n(v) + " " + (v == 1 ? one : many); }
 // The way out for the topology problems that charts solve (charts.h); the caller names the
-// option its user knows (charts_would_help in atlas/charts.h).
+// option its user knows (charts_would_help in atlas/prepare/prepare_input.h).
 const char* const kChartsHint = "parameterize it as charts";
 }  // namespace
 

@@ -17,6 +17,8 @@ bool manifold_copy_helps(ErrorCode code) {
          code == ErrorCode::RepeatedVertexInFace;
 }
 
+bool charts_would_help(ErrorCode code) { return cutting_into_disks_fixes(code) || manifold_copy_helps(code); }
+
 namespace {
 
 std::string count_text(int count, const char* one, const char* many) {
@@ -40,8 +42,7 @@ int bad_edges(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
 // the same way: those are parts that touch, or the two sides of a double-sided sheet, each better
 // charted alone. A disk keeps its seams; a soup is left to the manifold copy's refusal.
 bool weld(PreparedInput& p) {
-  const ErrorCode code = p.whole.error.code;
-  if (!(cutting_into_disks_fixes(code) || manifold_copy_helps(code)) || is_unwelded(p.V, p.F)) return false;
+  if (!charts_would_help(p.whole.error.code) || is_unwelded(p.V, p.F)) return false;
   PrepareStep step;
   step.kind = PrepareStep::Kind::Weld;
   step.welded = weld_duplicate_vertices(p.V, p.F);

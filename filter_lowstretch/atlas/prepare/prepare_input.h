@@ -45,4 +45,8 @@ ChartsResult give_back(const PreparedInput& prepared, ChartsResult charted, cons
 // The errors of the disk check that a manifold copy of the mesh gets past.
 bool manifold_copy_helps(ErrorCode code);
 
+// Whether making charts gets past this error of the disk check (a cut into disks or a manifold copy
+// fixes it): the caller then adds how its user asks for charts.
+bool charts_would_help(ErrorCode code);
+
 }  // namespace lowstretch
