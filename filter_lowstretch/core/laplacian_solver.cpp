@@ -25,9 +25,9 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 // solve is the slowest part of every cycle.
 constexpr unsigned kCoarseEnough = 1500;
 
-// Below this many unknowns METIS's ordering costs more than the fill it saves: AMD there (an
-// atlas solves many small charts).
-constexpr int kMetisMinimumRows = 3000;
+// Below this many unknowns KLU factors and solves faster than UMFPACK (an atlas solves many
+// small charts); above it UMFPACK's dense fronts win.
+constexpr int kKluMostRows = 30000;
 
 // The hierarchy in float: it only preconditions, so its precision bounds the iterations, not the
 // answer, and float halves the bytes of values a cycle streams. Gauss-Seidel smoothing needs no
@@ -219,12 +219,30 @@ bool LaplacianSolver::solve_amg(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& x) 
 
 bool LaplacianSolver::solve_direct(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& x) {
   Clock::time_point start = Clock::now();
+  if (matrix_.rows() < kKluMostRows) {
+    // The first pass's pivots serve the later ones (the weights change, the dominant diagonal
+    // stays); where they fail or leave too large a residual, the pass is factored afresh, as
+    // UMFPACK would, whose residual is taken as it is.
+    for (const bool fresh : {false, true}) {
+      const bool factored = small_lu_.factorize(matrix_, fresh);
+      report_.seconds_setup += seconds_since(start);
+      start = Clock::now();
+      const bool solved = factored && small_lu_.solve(rhs, x) && x.allFinite();
+      report_.seconds_solve += seconds_since(start);
+      start = Clock::now();
+      if (!solved) continue;
+      report_.relative_residual = std::max(relative_residual(matrix_, rhs.col(0), x.col(0)),
+                                           relative_residual(matrix_, rhs.col(1), x.col(1)));
+      if (fresh || report_.relative_residual <= options_.residual_accepted) return true;
+    }
+    return false;
+  }
   const Eigen::SparseMatrix<double> column_major = matrix_;  // UMFPACK takes compressed columns
   if (!analyzed_) {
-    // METIS leaves less fill than the default AMD ordering on these meshes (small systems aside,
-    // kMetisMinimumRows). The matrix is diagonally dominant, so the factorization is
-    // accurate without iterative refinement (which would triple the cost of a solve).
-    lu_.umfpackControl()(UMFPACK_ORDERING) = matrix_.rows() < kMetisMinimumRows ? UMFPACK_ORDERING_AMD : UMFPACK_ORDERING_METIS;
+    // METIS leaves less fill than the default AMD ordering on these meshes. The matrix is
+    // diagonally dominant, so the factorization is accurate without iterative refinement (which
+    // would triple the cost of a solve).
+    lu_.umfpackControl()(UMFPACK_ORDERING) = UMFPACK_ORDERING_METIS;
     lu_.umfpackControl()(UMFPACK_IRSTEP) = 0;
     {
       const std::lock_guard<std::mutex> one_ordering_at_a_time(metis_lock());

@@ -9,7 +9,8 @@
 //   serves both; a later pass rebuilds them from the values only (reused_coarsening.h). The matrix
 //   is an irreducibly diagonally dominant M-matrix for positive weights, the ideal case for AMG,
 //   and it needs no fill, so time and memory grow linearly with the mesh.
-// - Direct: UMFPACK's sparse LU (METIS ordering, AMD for small systems; symbolic analysis once).
+// - Direct: sparse LU, symbolic analysis once: KLU for small systems (small_system_lu.h),
+//   UMFPACK with METIS ordering for large ones.
 // An AMG solve that does not converge, or whose true residual is too large, falls back to the
 // direct solve for that pass; the pass's SolveReport says so. Small systems are always solved
 // directly.
@@ -21,6 +22,7 @@
 #include <vector>
 
 #include "core/disk_mesh.h"
+#include "core/small_system_lu.h"
 #include "core/solver_options.h"
 
 namespace lowstretch {
@@ -60,7 +62,8 @@ class LaplacianSolver {
   RowMatrix matrix_;                // row r: the equation of one interior vertex
   std::vector<int> slot_to_value_;  // ring slot -> index in matrix_.valuePtr(), -1 for boundary
   std::vector<int> diagonal_value_; // row -> index of its diagonal in valuePtr()
-  Eigen::UmfPackLU<Eigen::SparseMatrix<double>> lu_;
+  Eigen::UmfPackLU<Eigen::SparseMatrix<double>> lu_;  // from kKluMostRows rows
+  SmallSystemLu small_lu_;                            // below
   bool analyzed_ = false;
   struct Transfers;                      // the multigrid's P and R per level, kept across passes
   std::unique_ptr<Transfers> transfers_;

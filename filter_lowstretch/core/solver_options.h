@@ -6,7 +6,7 @@ namespace lowstretch {
 enum class LinearSolver {
   Amg,    // algebraic multigrid + BiCGStab; the direct solve for small systems and for a pass
           // where it does not converge
-  Direct  // sparse LU (UMFPACK)
+  Direct  // sparse LU (KLU for small systems, UMFPACK)
 };
 
 struct SolverOptions {
@@ -22,7 +22,7 @@ struct SolverOptions {
   double residual_accepted = 1e-7;
   int max_iterations = 50;
   // Smaller systems are solved directly: amgcl would solve them on one level by its own dense LU
-  // (its coarse_enough, 3000), slower than UMFPACK.
+  // (its coarse_enough, 3000), slower than a sparse LU.
   int amg_minimum_rows = 3000;
   // Cores one solve may use: 2 solves u and v each on a thread (the second hierarchy a twin that
   // shares the first's operators); 1 solves u then v with one hierarchy (for callers that keep the
