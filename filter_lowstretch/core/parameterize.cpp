@@ -162,21 +162,13 @@ std::vector<double> noted_initial_weights(const DiskMesh& disk, InitialWeights k
 
 Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Options& options) {
   const Clock::time_point start = Clock::now();
-  if (Error e = check_options(options)) return failed(e);
-  DiskMesh disk;
-  if (Error e = make_disk_mesh(V, F, disk)) return failed(e);
-  Result result = parameterize(disk, V.rows(), options);
-  result.seconds_total = seconds_since(start);
-  return result;
-}
-
-Result parameterize(const DiskMesh& disk, Eigen::Index vertex_rows, const Options& options) {
-  const Clock::time_point start = Clock::now();
   Result result;
   auto report = [&](double fraction, const char* stage) {
     return !options.progress || options.progress(fraction, stage);
   };
   if (Error e = check_options(options)) return failed(e);
+  DiskMesh disk;
+  if (Error e = make_disk_mesh(V, F, disk)) return failed(e);
   if (!report(0.02, "boundary")) return failed({ErrorCode::Cancelled, 0, ""});
   Eigen::MatrixXd boundary_uv;
   if (Error e = boundary_positions(disk, options, boundary_uv, result.notes)) return failed(e);
@@ -205,7 +197,7 @@ Result parameterize(const DiskMesh& disk, Eigen::Index vertex_rows, const Option
     metrics.seconds_assembly += reweighting;
     metrics.seconds = seconds_since(pass_start);
     result.passes.push_back(metrics);
-    if (options.pass_uv) options.pass_uv(pass, input_rows(disk, uv, vertex_rows));
+    if (options.pass_uv) options.pass_uv(pass, input_rows(disk, uv, V.rows()));
 
     const std::pair<int, double> this_rank = rank(stretch);
     if (pass == 0 || this_rank < best_rank) {
@@ -222,7 +214,7 @@ Result parameterize(const DiskMesh& disk, Eigen::Index vertex_rows, const Option
   note_solver_fallbacks(result);
   if (options.refine)
     refine(disk, options, best_uv, best_stretch, result);
-  keep_pass(disk, best_uv, best_stretch, vertex_rows, result);
+  keep_pass(disk, best_uv, best_stretch, V.rows(), result);
   result.seconds_total = seconds_since(start);
   report(1.0, "done");
   return result;

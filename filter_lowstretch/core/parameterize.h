@@ -64,8 +64,4 @@ struct Result {
 // Vertices that no face uses are ignored (their coordinates may be anything).
 Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Options& options = {});
 
-// The same on a disk that make_disk_mesh built (from V with vertex_rows rows): a caller that maps
-// one mesh many times (an atlas's charts, onto cells of other shapes) builds it once.
-Result parameterize(const DiskMesh& disk, Eigen::Index vertex_rows, const Options& options);
-
 }  // namespace lowstretch

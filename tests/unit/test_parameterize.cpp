@@ -5,7 +5,6 @@
 #include <cmath>
 #include <string>
 
-#include "core/disk_mesh.h"
 #include "core/parameterize.h"
 #include "core/stretch.h"
 #include "generated_meshes.h"
@@ -151,33 +150,6 @@ TEST(Parameterize, UnreferencedVerticesKeepTheirRowsAndChangeNothing) {
   EXPECT_EQ(b.uv.row(0), Eigen::RowVector2d::Zero());
   EXPECT_LT((b.uv.middleRows(1, m.V.rows()) - a.uv).cwiseAbs().maxCoeff(), 1e-12);
   EXPECT_EQ(a.chosen_pass, b.chosen_pass);
-}
-
-// A disk built once and mapped several times (as an atlas maps its charts onto cells of other
-// shapes) gives each time what the mesh itself gives, in the input's rows.
-TEST(Parameterize, ADiskBuiltOnceMapsAsTheMeshDoes) {
-  const testmesh::Mesh m = testmesh::tall_cap(12, 30);
-  testmesh::Mesh padded;
-  padded.V.resize(m.V.rows() + 1, 3);
-  padded.V.topRows(m.V.rows()) = m.V;
-  padded.V.bottomRows(1) << 7, 7, 7;  // unreferenced
-  padded.F = m.F;
-  DiskMesh disk;
-  ASSERT_FALSE(make_disk_mesh(padded.V, padded.F, disk));
-  for (const double aspect : {1.0, 2.5, 0.4}) {
-    Options o;
-    o.rectangle.aspect = aspect;
-    const Result whole = parameterize(padded.V, padded.F, o), built = parameterize(disk, padded.V.rows(), o);
-    ASSERT_FALSE(built.error) << message(built.error);
-    ASSERT_EQ(built.uv.rows(), padded.V.rows());
-    EXPECT_EQ(built.uv, whole.uv) << "aspect " << aspect;
-    EXPECT_EQ(built.face_stretch, whole.face_stretch);
-    EXPECT_EQ(built.chosen_pass, whole.chosen_pass);
-    EXPECT_EQ(built.passes.size(), whole.passes.size());
-  }
-  Options bad;
-  bad.exponent = 0;
-  EXPECT_EQ(parameterize(disk, padded.V.rows(), bad).error.code, ErrorCode::InvalidOption);
 }
 
 // The free boundary carries no no-flip guarantee: every pass's reported flip and zero-area counts

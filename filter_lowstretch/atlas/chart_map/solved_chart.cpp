@@ -100,11 +100,6 @@ Error make_chart_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
   chart.V.resize(Eigen::Index(cut.original_vertex.size()), 3);
   for (size_t i = 0; i < cut.original_vertex.size(); ++i) chart.V.row(Eigen::Index(i)) = local_V.row(cut.original_vertex[i]);
   chart.input_face = faces;
-  // A chart that was a disk before (no hole closed, no cut) keeps the disk its check built.
-  auto disk = std::make_shared<DiskMesh>();
-  if (!e && chart.F == local_F && chart.V == local_V) *disk = std::move(check);
-  else if (make_disk_mesh(chart.V, chart.F, *disk)) disk = nullptr;
-  chart.disk = std::move(disk);
   return {};
 }
 
@@ -139,8 +134,7 @@ void solve_onto(SolvedChart& chart, Options options, double aspect, bool free_bo
   chart.passes.clear();
   options.pass_uv = [&chart](int, const Eigen::MatrixXd& uv) { chart.passes.push_back(measure_real_faces(chart.mesh, uv)); };
   options.measure_distortions = false;  // the passes are measured over the real faces above
-  chart.map = chart.mesh.disk ? parameterize(*chart.mesh.disk, chart.mesh.V.rows(), options)
-                              : parameterize(chart.mesh.V, chart.mesh.F, options);
+  chart.map = parameterize(chart.mesh.V, chart.mesh.F, options);
   if (chart.map.error) return;
   // A refined map is none of the passes: measured on its own.
   if (options.refine) chart.passes.at(size_t(chart.map.chosen_pass)) = measure_real_faces(chart.mesh, chart.map.uv);

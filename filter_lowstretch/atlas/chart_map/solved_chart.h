@@ -6,11 +6,9 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <limits>
-#include <memory>
 #include <vector>
 
 #include "atlas/base/atlas_types.h"
-#include "core/disk_mesh.h"
 #include "core/parameterize.h"
 
 namespace lowstretch {
@@ -27,8 +25,6 @@ struct ChartMesh {
   std::vector<int> input_face;  // real face -> input face
   int closed_holes = 0;
   double seam_length = 0;       // in unit-box lengths
-  // V and F as the method's disk, built once for every map of the chart (null if they are none).
-  std::shared_ptr<const DiskMesh> disk;
 };
 
 // local_of: -1 for every vertex, and left so (one array for all components keeps many small
