@@ -11,7 +11,7 @@ struct SmallSystemLu::Klu {
   int rows = 0;
 };
 
-SmallSystemLu::SmallSystemLu() : klu_(new Klu) {
+SmallSystemLu::SmallSystemLu() : klu_(std::make_unique<Klu>()) {
   klu_defaults(&klu_->common);
   klu_->common.btf = 0;  // a chart's system is one block: the search for more only costs time
 }
@@ -19,7 +19,6 @@ SmallSystemLu::SmallSystemLu() : klu_(new Klu) {
 SmallSystemLu::~SmallSystemLu() {
   if (klu_->numeric) klu_free_numeric(&klu_->numeric, &klu_->common);
   if (klu_->symbolic) klu_free_symbolic(&klu_->symbolic, &klu_->common);
-  delete klu_;
 }
 
 bool SmallSystemLu::factorize(Eigen::SparseMatrix<double, Eigen::RowMajor, int>& A, bool fresh) {

@@ -5,6 +5,7 @@
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/Sparse>
+#include <memory>
 
 namespace lowstretch {
 
@@ -22,8 +23,8 @@ class SmallSystemLu {
   bool solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x);
 
  private:
-  struct Klu;
-  Klu* klu_;
+  struct Klu;  // KLU's objects (klu.h stays out of this header)
+  std::unique_ptr<Klu> klu_;
 };
 
 }  // namespace lowstretch
