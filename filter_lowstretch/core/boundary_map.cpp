@@ -6,7 +6,6 @@
 #include <string>
 #include <vector>
 
-#include "core/square_corners.h"
 
 namespace lowstretch {
 
@@ -64,8 +63,8 @@ class SideBulge {
 
 }  // namespace
 
-Eigen::MatrixXd square_boundary(const DiskMesh& disk, const std::array<int, 4>& corners, const std::vector<int>& kinks,
-                                double aspect, const std::vector<int>& ear_tips, double ear_bulge) {
+Eigen::MatrixXd square_sides(const DiskMesh& disk, const std::array<int, 4>& corners, const std::vector<int>& kinks,
+                             double aspect) {
   static const double outward[4][2] = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
   const std::vector<double> arc = boundary_arc_lengths(disk);
   const int n = int(disk.boundary.size());
@@ -97,27 +96,31 @@ Eigen::MatrixXd square_boundary(const DiskMesh& disk, const std::array<int, 4>& 
       uv(i % n, 1) = a[1] + t * (c[1] - a[1]) + b * outward[side][1];
     }
   }
-  for (int tip : ear_tips) {  // pushed out from its chord, by a share of the chord's length
-    const Eigen::RowVector2d a = uv.row((tip + n - 1) % n), b = uv.row((tip + 1) % n);
-    const Eigen::RowVector2d chord = b - a;
-    const Eigen::RowVector2d outward(chord.y(), -chord.x());  // the interior is on the left of the loop
-    const Eigen::RowVector2d foot = a + chord * std::max(0.0, std::min(1.0, (uv.row(tip) - a).dot(chord) / chord.squaredNorm()));
-    const double height = (uv.row(tip) - foot).dot(outward.normalized());
-    const double wanted = ear_bulge * chord.norm();
-    if (chord.squaredNorm() > 0 && height < wanted) uv.row(tip) += (wanted - height) * outward.normalized();
-  }
+  return uv;
+}
+
+Eigen::MatrixXd fitted_into_unit_box(const Eigen::MatrixXd& uv) {
   const Eigen::RowVector2d lo = uv.colwise().minCoeff(), hi = uv.colwise().maxCoeff();
   return (uv.rowwise() - lo) / (hi - lo).maxCoeff();
 }
 
-Eigen::MatrixXd rectangle_boundary(const DiskMesh& disk, const RectangleSettings& settings, std::vector<std::string>& notes) {
-  const SquareCorners corners = choose_square_corners(disk, settings.corners_at_turns);
+Eigen::MatrixXd square_boundary(const DiskMesh& disk, const std::array<int, 4>& corners, const std::vector<int>& kinks,
+                                double aspect) {
+  return fitted_into_unit_box(square_sides(disk, corners, kinks, aspect));
+}
+
+void note_square_corners(const SquareCorners& corners, std::vector<std::string>& notes) {
   if (corners.moved) notes.push_back("square corners moved off the quarter arc lengths so that no boundary triangle collapses");
   if (corners.collapsed_chords > 0)
     notes.push_back(std::to_string(corners.collapsed_chords) +
                     " interior edges join two boundary vertices of one square side whatever the corners: "
                     "those sides bend outward slightly (at most 0.8% of their length) so that no triangle collapses");
-  return square_boundary(disk, corners.corners, corners.kinks, settings.aspect, corners.ear_tips, settings.ear_bulge);
+}
+
+Eigen::MatrixXd paper_square_boundary(const DiskMesh& disk, std::vector<std::string>& notes) {
+  const SquareCorners corners = choose_square_corners(disk);
+  note_square_corners(corners, notes);
+  return square_boundary(disk, corners.corners, corners.kinks);
 }
 
 }  // namespace lowstretch

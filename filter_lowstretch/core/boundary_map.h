@@ -7,6 +7,7 @@
 
 #include "core/disk_mesh.h"
 #include "core/method_types.h"
+#include "core/square_corners.h"
 
 namespace lowstretch {
 
@@ -24,19 +25,18 @@ Eigen::MatrixXd circle_boundary(const DiskMesh& disk);
 // A side that holds loop positions of `kinks` bulges outward, by at most kKinkBulge of its
 // length, as a concave polyline that bends at each of them: every interior edge joining two
 // points of that side with a kink strictly between them then spans a triangle of positive area
-// (the domain stays convex). With ear_bulge > 0 the tip of an ear (a boundary triangle whose
-// third edge is interior) bulges further, to ear_bulge times its ear's chord: the ear then keeps
-// a fair share of its area, where the side's bulge alone leaves a sliver on a jagged boundary
-// (at the cost of a box a little larger than the square). The ears lie outside the convex
-// polygon through their chords, each over its own chord, so none overlaps.
-// The whole is fitted back into [0,1]^2.
+// (the domain stays convex). square_sides leaves the rectangle at its own size (width aspect,
+// height 1, for a caller that moves points before fitting); square_boundary fits it into [0,1]^2.
+Eigen::MatrixXd square_sides(const DiskMesh& disk, const std::array<int, 4>& corners, const std::vector<int>& kinks = {},
+                             double aspect = 1);
 Eigen::MatrixXd square_boundary(const DiskMesh& disk, const std::array<int, 4>& corners,
-                                const std::vector<int>& kinks = {}, double aspect = 1,
-                                const std::vector<int>& ear_tips = {}, double ear_bulge = 0);
-// The square boundary of the method (square_boundary at corners chosen by choose_square_corners),
-// with a note where the corners had to move or sides to bend; `settings` (method_types.h) make it
-// a rectangle with corners where the boundary turns and bulging ears.
-Eigen::MatrixXd rectangle_boundary(const DiskMesh& disk, const RectangleSettings& settings, std::vector<std::string>& notes);
+                                const std::vector<int>& kinks = {}, double aspect = 1);
+// uv moved and scaled uniformly so that its box starts at (0,0) and its longer side is 1.
+Eigen::MatrixXd fitted_into_unit_box(const Eigen::MatrixXd& uv);
+// The paper's square: square_boundary at the corners choose_square_corners picks, with a note
+// (note_square_corners) where they had to move or sides to bend.
+Eigen::MatrixXd paper_square_boundary(const DiskMesh& disk, std::vector<std::string>& notes);
+void note_square_corners(const SquareCorners& corners, std::vector<std::string>& notes);
 // 0.8%: small enough that the square map still covers nearly all of the texture; less bulge makes
 // the triangles at the kinks thinner and raises their stretch.
 constexpr double kKinkBulge = 0.008;

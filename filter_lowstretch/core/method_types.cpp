@@ -7,6 +7,7 @@ const char* to_string(BoundaryShape shape) {
     case BoundaryShape::Square: return "square";
     case BoundaryShape::Circle: return "circle";
     case BoundaryShape::Natural: return "natural";
+    case BoundaryShape::Given: return "given";
   }
   return "?";
 }

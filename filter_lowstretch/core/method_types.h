@@ -6,15 +6,9 @@
 
 namespace lowstretch {
 
-enum class BoundaryShape { Square, Circle, Natural };
-// The square boundary's shape: the paper's square by default; a rectangle of another aspect, with
-// corners where the boundary turns and ears that bulge (boundary_map.h), for charts cut out of a
-// larger mesh.
-struct RectangleSettings {
-  double aspect = 1;              // width / height; 0: as long as the arcs between the corners
-  bool corners_at_turns = false;  // as choose_square_corners's at_sharpest_turns
-  double ear_bulge = 0;           // as square_boundary's, from 0 to 1
-};
+// Where the boundary loop goes: the paper's unit square, the circle, a free (natural) boundary,
+// or positions the caller gives (Options::given_boundary), such as a rectangle of its own.
+enum class BoundaryShape { Square, Circle, Natural, Given };
 enum class InitialWeights { Floater, MeanValue, Harmonic };
 enum class StopReason { StretchRose, MaxPasses };
 

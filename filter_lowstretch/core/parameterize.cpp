@@ -11,7 +11,6 @@
 #include "core/natural_boundary.h"
 #include "core/refine_stretch.h"
 #include "core/ring_weights.h"
-#include "core/square_corners.h"
 #include "core/stretch.h"
 
 namespace lowstretch {
@@ -32,9 +31,6 @@ Error check_options(const Options& o) {
   if (o.refine_iterations < 1 || o.refine_iterations > kMostRefineIterations)
     return {ErrorCode::InvalidOption, 0, "must be from 1 to " + std::to_string(kMostRefineIterations) + ", got " +
                                              std::to_string(o.refine_iterations), "refine_iterations"};
-  const RectangleSettings& r = o.rectangle;
-  if (!(r.aspect >= 0 && r.aspect < 1e6 && r.ear_bulge >= 0 && r.ear_bulge <= 1))
-    return {ErrorCode::InvalidOption, 0, "are out of range (aspect from 0, ear bulge from 0 to 1)", "rectangle settings"};
   const SolverOptions& s = o.solver;
   if (!(s.tolerance > 0 && s.tolerance < 1 && s.residual_accepted >= s.tolerance && s.max_iterations > 0 &&
         s.amg_minimum_rows >= 1))
@@ -49,12 +45,29 @@ std::pair<int, double> rank(const FaceStretch& s) {
   return {s.flipped + s.degenerate, l2_stretch(s, true)};
 }
 
-Error boundary_positions(const DiskMesh& disk, const Options& options, Eigen::MatrixXd& boundary_uv,
-                         std::vector<std::string>& notes) {
+// Given positions, checked: one finite UV per vertex row, read at the boundary vertices.
+Error given_positions(const DiskMesh& disk, const Eigen::MatrixXd& given, Eigen::Index vertex_rows,
+                      Eigen::MatrixXd& boundary_uv) {
+  if (given.rows() != vertex_rows || given.cols() != 2)
+    return {ErrorCode::InvalidOption, 0, "must have one row of two coordinates per vertex, got " +
+                                             std::to_string(given.rows()) + " x " + std::to_string(given.cols()),
+            "given_boundary"};
+  boundary_uv.resize(Eigen::Index(disk.boundary.size()), 2);
+  for (size_t i = 0; i < disk.boundary.size(); ++i) {
+    boundary_uv.row(Eigen::Index(i)) = given.row(disk.input_vertex[size_t(disk.boundary[i])]);
+    if (!boundary_uv.row(Eigen::Index(i)).allFinite())
+      return {ErrorCode::InvalidOption, 0, "must be finite at every boundary vertex", "given_boundary"};
+  }
+  return {};
+}
+
+Error boundary_positions(const DiskMesh& disk, const Options& options, Eigen::Index vertex_rows,
+                         Eigen::MatrixXd& boundary_uv, std::vector<std::string>& notes) {
   switch (options.boundary) {
     case BoundaryShape::Circle: boundary_uv = circle_boundary(disk); return {};
     case BoundaryShape::Natural: return natural_boundary(disk, boundary_uv);
-    case BoundaryShape::Square: boundary_uv = rectangle_boundary(disk, options.rectangle, notes); return {};
+    case BoundaryShape::Square: boundary_uv = paper_square_boundary(disk, notes); return {};
+    case BoundaryShape::Given: return given_positions(disk, options.given_boundary, vertex_rows, boundary_uv);
   }
   return {};
 }
@@ -162,16 +175,24 @@ std::vector<double> noted_initial_weights(const DiskMesh& disk, InitialWeights k
 
 Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Options& options) {
   const Clock::time_point start = Clock::now();
+  if (Error e = check_options(options)) return failed(e);
+  DiskMesh disk;
+  if (Error e = make_disk_mesh(V, F, disk)) return failed(e);
+  Result result = parameterize(disk, V.rows(), options);
+  result.seconds_total = seconds_since(start);
+  return result;
+}
+
+Result parameterize(const DiskMesh& disk, Eigen::Index vertex_rows, const Options& options) {
+  const Clock::time_point start = Clock::now();
   Result result;
   auto report = [&](double fraction, const char* stage) {
     return !options.progress || options.progress(fraction, stage);
   };
   if (Error e = check_options(options)) return failed(e);
-  DiskMesh disk;
-  if (Error e = make_disk_mesh(V, F, disk)) return failed(e);
   if (!report(0.02, "boundary")) return failed({ErrorCode::Cancelled, 0, ""});
   Eigen::MatrixXd boundary_uv;
-  if (Error e = boundary_positions(disk, options, boundary_uv, result.notes)) return failed(e);
+  if (Error e = boundary_positions(disk, options, vertex_rows, boundary_uv, result.notes)) return failed(e);
 
   std::vector<double> weights = noted_initial_weights(disk, options.weights, result.notes);
 
@@ -197,7 +218,7 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
     metrics.seconds_assembly += reweighting;
     metrics.seconds = seconds_since(pass_start);
     result.passes.push_back(metrics);
-    if (options.pass_uv) options.pass_uv(pass, input_rows(disk, uv, V.rows()));
+    if (options.pass_uv) options.pass_uv(pass, input_rows(disk, uv, vertex_rows));
 
     const std::pair<int, double> this_rank = rank(stretch);
     if (pass == 0 || this_rank < best_rank) {
@@ -214,7 +235,7 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
   note_solver_fallbacks(result);
   if (options.refine)
     refine(disk, options, best_uv, best_stretch, result);
-  keep_pass(disk, best_uv, best_stretch, V.rows(), result);
+  keep_pass(disk, best_uv, best_stretch, vertex_rows, result);
   result.seconds_total = seconds_since(start);
   report(1.0, "done");
   return result;

@@ -20,7 +20,9 @@ constexpr int kMostRefineIterations = 10000;
 
 struct Options {
   BoundaryShape boundary = BoundaryShape::Square;
-  RectangleSettings rectangle;  // with Square: the square's aspect, corners and ears
+  // With Given: #V x 2, the UV of every boundary vertex (other rows are not read). Positions on
+  // a convex polygon keep Floater's guarantee that no triangle flips.
+  Eigen::MatrixXd given_boundary;
   InitialWeights weights = InitialWeights::Floater;
   double exponent = 1.0;  // eta in (0, 1]: weights are divided by sigma_j^eta each pass
   int max_passes = 10;    // 0: U0 only; 1: U0 and U1; at most kMostPasses
@@ -63,5 +65,9 @@ struct Result {
 // V: #V x 3 vertex positions; F: #F x 3 vertex indices of counter-clockwise triangles.
 // Vertices that no face uses are ignored (their coordinates may be anything).
 Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Options& options = {});
+
+// The same on a disk that make_disk_mesh built (from V with vertex_rows rows): for a caller that
+// needs the disk's boundary loop first, to give its positions.
+Result parameterize(const DiskMesh& disk, Eigen::Index vertex_rows, const Options& options);
 
 }  // namespace lowstretch

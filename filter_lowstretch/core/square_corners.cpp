@@ -1,6 +1,5 @@
 #include "core/square_corners.h"
 
-#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -118,57 +117,9 @@ void best_corners_from(int s, const std::vector<double>& arc, const std::vector<
   }
 }
 
-// How much the boundary turns at each loop position: pi minus the sum of the face angles at the
-// vertex, summed with its two loop neighbours so that a corner cut over two edges counts whole.
-std::vector<double> boundary_turning(const DiskMesh& disk) {
-  const int n = int(disk.boundary.size());
-  std::vector<double> angle_sum(size_t(disk.V.rows()), 0.0);
-  for (Eigen::Index f = 0; f < disk.F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const Eigen::Vector3d a = disk.V.row(disk.F(f, (k + 1) % 3)) - disk.V.row(disk.F(f, k));
-      const Eigen::Vector3d b = disk.V.row(disk.F(f, (k + 2) % 3)) - disk.V.row(disk.F(f, k));
-      angle_sum[size_t(disk.F(f, k))] += std::atan2(a.cross(b).norm(), a.dot(b));
-    }
-  const double pi = 3.14159265358979323846;
-  std::vector<double> turning(static_cast<size_t>(n), 0.0);
-  for (int i = 0; i < n; ++i)
-    for (int d = -1; d <= 1; ++d) turning[size_t(i)] += pi - angle_sum[size_t(disk.boundary[size_t((i + d + n) % n)])];
-  return turning;
-}
-
-// Corners at the quarter arc lengths from the sharpest turn, each of the other three moved to the
-// sharpest turn within an eighth of the perimeter of it if that turns by 30 degrees or more (a
-// round boundary, where no turn stands out, keeps the quarter arc lengths). Increasing positions.
-std::array<int, 4> sharpest_turn_corners(const DiskMesh& disk, const std::vector<double>& arc) {
-  const int n = int(disk.boundary.size());
-  const std::vector<double> turning = boundary_turning(disk);
-  const double perimeter = arc[size_t(n)], pi = 3.14159265358979323846;
-  const int first = int(std::max_element(turning.begin(), turning.end()) - turning.begin());
-  std::array<int, 4> corners{first, first, first, first};
-  int at = first;  // walks the loop once from the first corner
-  for (int k = 1; k < 4; ++k) {
-    const double target = arc[size_t(first)] + k * perimeter / 4;
-    const auto unrolled = [&](int i) { return i >= first ? arc[size_t(i)] : arc[size_t(i)] + perimeter; };
-    int nearest = -1, sharpest = -1;
-    for (int step = at - first + 1; step < n; ++step) {
-      const int i = (first + step) % n;
-      const double d = unrolled(i) - target;
-      if (d > perimeter / 8) break;
-      if (d < -perimeter / 8) continue;
-      if (nearest < 0 || std::abs(d) < std::abs(unrolled(nearest) - target)) nearest = i;
-      if (sharpest < 0 || turning[size_t(i)] > turning[size_t(sharpest)]) sharpest = i;
-    }
-    if (nearest < 0) nearest = (at + 1) % n;  // a coarse loop: the next vertex
-    corners[size_t(k)] = sharpest >= 0 && turning[size_t(sharpest)] >= pi / 6 ? sharpest : nearest;
-    at = corners[size_t(k)];
-  }
-  std::sort(corners.begin(), corners.end());
-  return corners;
-}
-
 }  // namespace
 
-SquareCorners choose_square_corners(const DiskMesh& disk, bool at_sharpest_turns) {
+SquareCorners choose_square_corners(const DiskMesh& disk, const std::array<int, 4>* preferred) {
   const int n = int(disk.boundary.size());
   SquareCorners result;
   if (n < 4) {  // a lone triangle: three corners of the square
@@ -177,8 +128,8 @@ SquareCorners choose_square_corners(const DiskMesh& disk, bool at_sharpest_turns
   }
   const std::vector<double> arc = boundary_arc_lengths(disk);
   const std::vector<Arc> arcs = arcs_needing_a_corner(disk);
-  if (at_sharpest_turns) {
-    result.corners = sharpest_turn_corners(disk, arc);
+  if (preferred) {
+    result.corners = *preferred;
     const bool distinct = std::adjacent_find(result.corners.begin(), result.corners.end()) == result.corners.end();
     if (distinct && collapsed_chords(arcs, result.corners, n) == 0) return result;
   }

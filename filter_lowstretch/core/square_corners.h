@@ -24,10 +24,8 @@ struct SquareCorners {
 // side and collapse its triangles; if the quarter choice makes such an edge, the corners are
 // chosen instead so that every such edge has a corner strictly inside both of the boundary arcs
 // it cuts off, with side lengths as close to a quarter as possible (dynamic programming).
-// With at_sharpest_turns the quarter arc lengths start at the boundary's sharpest turn on the
-// surface (pi minus the sum of face angles, over a vertex and its two neighbours), and each other
-// corner moves to a turn of 30 degrees or more within an eighth of the perimeter: a chart cut out
-// of a larger mesh often has four such turns already.
-SquareCorners choose_square_corners(const DiskMesh& disk, bool at_sharpest_turns = false);
+// With `preferred` (if not null: increasing loop positions where a caller would rather have them): those
+// corners, if they are distinct and collapse no triangle; else the choice above.
+SquareCorners choose_square_corners(const DiskMesh& disk, const std::array<int, 4>* preferred = nullptr);
 
 }  // namespace lowstretch

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "core/parameterize.h"
@@ -269,4 +270,43 @@ TEST(Parameterize, RejectsInvalidOptionsBeforeTouchingTheMesh) {
   o.exponent = 1;
   o.max_passes = -1;
   EXPECT_EQ(parameterize(m.V, m.F, o).error.code, ErrorCode::InvalidOption);
+}
+
+TEST(Parameterize, GivenBoundaryPositionsMapAsTheShapeTheyComeFrom) {
+  // The circle's own positions, given: the same map as the circle, to the last bit.
+  const testmesh::Mesh m = testmesh::hemisphere(8, 16);
+  Options circle;
+  circle.boundary = BoundaryShape::Circle;
+  const Result expected = parameterize(m.V, m.F, circle);
+  ASSERT_FALSE(expected.error) << message(expected.error);
+  Options given;
+  given.boundary = BoundaryShape::Given;
+  given.given_boundary = Eigen::MatrixXd::Constant(m.V.rows(), 2, std::nan(""));  // interior rows are not read
+  int boundary = 0;
+  for (Eigen::Index i = 0; i < m.V.rows(); ++i)
+    if (std::abs(m.V(i, 2)) < 1e-12) {  // the hemisphere's rim
+      given.given_boundary.row(i) = expected.uv.row(i);
+      ++boundary;
+    }
+  ASSERT_EQ(boundary, 16);
+  const Result r = parameterize(m.V, m.F, given);
+  ASSERT_FALSE(r.error) << message(r.error);
+  EXPECT_EQ(r.uv, expected.uv);
+  EXPECT_EQ(r.chosen_pass, expected.chosen_pass);
+}
+
+TEST(Parameterize, GivenBoundaryPositionsAreChecked) {
+  const testmesh::Mesh m = testmesh::grid(3);
+  Options o;
+  o.boundary = BoundaryShape::Given;
+  const Result none = parameterize(m.V, m.F, o);  // no positions at all
+  EXPECT_EQ(none.error.code, ErrorCode::InvalidOption);
+  EXPECT_EQ(none.error.option, "given_boundary");
+  EXPECT_NE(message(none.error).find("one row of two coordinates per vertex, got 0 x 0"), std::string::npos) << message(none.error);
+  o.given_boundary = Eigen::MatrixXd::Zero(m.V.rows(), 2);
+  o.given_boundary(0, 1) = std::numeric_limits<double>::infinity();  // vertex 0 is a corner of the grid
+  const Result infinite = parameterize(m.V, m.F, o);
+  EXPECT_EQ(infinite.error.code, ErrorCode::InvalidOption);
+  EXPECT_NE(message(infinite.error).find("finite at every boundary vertex"), std::string::npos) << message(infinite.error);
+  EXPECT_TRUE(infinite.uv.size() == 0);
 }

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "atlas/base/tuning.h"
+#include "atlas/chart_map/chart_rectangle.h"
 #include "core/boundary_loops.h"
 #include "atlas/cut/close_holes.h"
 #include "atlas/cut/cut_graph.h"
@@ -123,18 +124,39 @@ bool bound_cuts(const SolvedChart& chart, double max_stretch) {
   return needs_split(chart.kept, max_stretch) || texture_cost(chart) > chart.kept.area_3d * max_stretch * max_stretch;
 }
 
+namespace {
+
+// The method on the chart's mesh: onto its rectangle (chart_rectangle.h), or with the natural
+// boundary. The rectangle's notes come first, where the core's square puts its own.
+Result map_chart(const ChartMesh& mesh, Options options, double aspect, bool free_boundary) {
+  Result map;
+  DiskMesh disk;
+  if ((map.error = make_disk_mesh(mesh.V, mesh.F, disk))) return map;
+  std::vector<std::string> notes;
+  if (free_boundary) {
+    options.boundary = BoundaryShape::Natural;
+  } else {
+    const Eigen::MatrixXd loop_uv = chart_rectangle(disk, {aspect, kTuning.ear_bulge}, notes);
+    options.boundary = BoundaryShape::Given;
+    options.given_boundary = Eigen::MatrixXd::Zero(mesh.V.rows(), 2);
+    for (size_t i = 0; i < disk.boundary.size(); ++i)
+      options.given_boundary.row(disk.input_vertex[size_t(disk.boundary[i])]) = loop_uv.row(Eigen::Index(i));
+  }
+  map = parameterize(disk, mesh.V.rows(), options);
+  if (!map.error) map.notes.insert(map.notes.begin(), notes.begin(), notes.end());
+  return map;
+}
+
+}  // namespace
+
 void solve_onto(SolvedChart& chart, Options options, double aspect, bool free_boundary) {
-  options.boundary = free_boundary ? BoundaryShape::Natural : BoundaryShape::Square;
-  options.rectangle.aspect = aspect;
-  options.rectangle.corners_at_turns = true;
-  options.rectangle.ear_bulge = kTuning.ear_bulge;
   options.progress = nullptr;  // called from worker threads: the caller reports between rounds
   chart.free_boundary = free_boundary;
   chart.deciding_map = false;
   chart.passes.clear();
   options.pass_uv = [&chart](int, const Eigen::MatrixXd& uv) { chart.passes.push_back(measure_real_faces(chart.mesh, uv)); };
   options.measure_distortions = false;  // the passes are measured over the real faces above
-  chart.map = parameterize(chart.mesh.V, chart.mesh.F, options);
+  chart.map = map_chart(chart.mesh, options, aspect, free_boundary);
   if (chart.map.error) return;
   // A refined map is none of the passes: measured on its own.
   if (options.refine) chart.passes.at(size_t(chart.map.chosen_pass)) = measure_real_faces(chart.mesh, chart.map.uv);
