@@ -6,7 +6,6 @@
 #include <string>
 #include <vector>
 
-
 namespace lowstretch {
 
 std::vector<double> boundary_arc_lengths(const DiskMesh& disk) {

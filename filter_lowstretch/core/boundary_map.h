@@ -6,7 +6,6 @@
 #include <vector>
 
 #include "core/disk_mesh.h"
-#include "core/method_types.h"
 #include "core/square_corners.h"
 
 namespace lowstretch {

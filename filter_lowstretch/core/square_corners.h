@@ -24,8 +24,8 @@ struct SquareCorners {
 // side and collapse its triangles; if the quarter choice makes such an edge, the corners are
 // chosen instead so that every such edge has a corner strictly inside both of the boundary arcs
 // it cuts off, with side lengths as close to a quarter as possible (dynamic programming).
-// With `preferred` (if not null: increasing loop positions where a caller would rather have them): those
-// corners, if they are distinct and collapse no triangle; else the choice above.
+// With `preferred` (if not null: increasing loop positions where a caller would rather have the
+// corners): those, if they are distinct and collapse no triangle; else the choice above.
 SquareCorners choose_square_corners(const DiskMesh& disk, const std::array<int, 4>* preferred = nullptr);
 
 }  // namespace lowstretch
