@@ -34,6 +34,10 @@ struct MergeSteps {
   NeighbourMerging& merging;
   double least;
   bool by_outline;
+  // Small charts go into a tiling's empty texels (each choice a layout of every chart again) only
+  // where the tiling alone falls below the least efficiency: they change no seam, so a step that
+  // keeps it without them is kept unfilled, and filled once if it stays the kept one.
+  bool& kept_unfilled;
   // Packed by outline, every chart keeps the map it has alone, and the steps share most charts:
   // each is freed or mapped fully once (refined maps cost many solves), by its faces.
   std::map<std::vector<int>, SolvedChart> mapped;
@@ -66,6 +70,7 @@ struct MergeSteps {
   bool keep_least(size_t merges) {
     std::vector<SolvedChart> charts = merging.charts_after(merges);
     LaidOutCharts merged;
+    bool filled = false;
     if (by_outline) {
       map_once(charts);
       merged.atlas = packed_by_outline(s, charts);
@@ -73,10 +78,16 @@ struct MergeSteps {
     } else {
       free_the_charts_that_stretch(charts, s.options, s.cut_must_pay);
       merged = s.tile(std::move(charts));
-      if (!merged.atlas.error) fill_empty_texels(s, merged.charts, merged.atlas);
+      if (!merged.atlas.error && !(texture_efficiency(merged.atlas) >= least)) {
+        fill_empty_texels(s, merged.charts, merged.atlas);
+        filled = true;
+      }
     }
     if (merged.atlas.error || !(texture_efficiency(merged.atlas) >= least)) return false;
-    if (merged.atlas.seam_length < s.result.seam_length) s.keep(std::move(merged));
+    if (merged.atlas.seam_length < s.result.seam_length) {
+      s.keep(std::move(merged));
+      kept_unfilled = !by_outline && !filled;
+    }
     return true;
   }
 };
@@ -140,15 +151,17 @@ bool merge_for_shorter_seams(AtlasSearch& s) {
   if (s.result.error || s.cut.empty() || !unmerged_keeps_least()) return false;
   const ChartsResult unmerged = s.result;
   const std::vector<int> twin = opposite_half_edges(s.F);
+  bool kept_unfilled = false;
   for (const bool free_unions : {false, true}) {
     // A least efficiency of the user's own is a trade-off chosen as fewer_seams is.
     if (free_unions && ((!s.options.fewer_seams && !users_least) || s.F.rows() > kTuning.most_free_union_faces))
       continue;
     NeighbourMerging merging(s.cut, s.unit_V, s.F, twin, s.options, free_unions);
-    MergeSteps steps{s, merging, least, free_unions || users_least, {}};
+    MergeSteps steps{s, merging, least, free_unions || users_least, kept_unfilled, {}};
     if (free_unions) merge_by_count(steps);
     else merge_along_growths(steps);
   }
+  if (kept_unfilled) fill_empty_texels(s, s.kept, s.result);
   if (s.result.charts.size() >= unmerged.charts.size()) return false;
   s.notes.push_back(std::to_string(unmerged.charts.size() - s.result.charts.size()) + " charts merged for shorter seams (" +
                     number_text(unmerged.seam_length) + " -> " + number_text(s.result.seam_length) + "): efficiency " +
