@@ -118,6 +118,10 @@ struct AtlasTuning {
   double least_empty_share = 0.05;
   // A chart whose real faces cover this share of its box is seen as its box.
   double least_guest_fill = 0.9;
+  // Charts mapped free where that stretches them less, turned to their smallest box, have packed
+  // by outline to at most about nine tenths of the coverage the same charts reached on their
+  // rectangles: they are freed and packed only where this share of that coverage would win.
+  double most_free_outline_coverage = 0.92;
   // The grid of empty texels is the texture's texels up to this many per side, coarser beyond
   // (a 65536^2 grid would take 4 GiB).
   int most_grid_side = 2048;

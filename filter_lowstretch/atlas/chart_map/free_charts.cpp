@@ -95,7 +95,7 @@ int free_where_it_stretches_less(std::vector<SolvedChart>& charts, const ChartOp
   std::vector<char> freed(charts.size(), 0);
   for_each_index(int(charts.size()), [&](int k, int) {
     SolvedChart& chart = charts[size_t(k)];
-    if (chart.free_boundary || !(chart.kept.l2_stretch > kTuning.free_above)) return;
+    if (!may_free_for_less_stretch(chart)) return;
     const auto less_stretch = [](const SolvedChart& c) { return -c.kept.l2_stretch; };
     Options solve = for_share(options.disk, chart.faces.size(), faces);
     solve.refine_moves_boundary = true;  // where refined: less stretch still (refine_free_outlines)
@@ -103,6 +103,17 @@ int free_where_it_stretches_less(std::vector<SolvedChart>& charts, const ChartOp
     turn_to_smallest_box(chart);
   });
   return int(std::count(freed.begin(), freed.end(), 1));
+}
+
+bool may_free_for_less_stretch(const SolvedChart& chart) { return !chart.free_boundary && chart.kept.l2_stretch > kTuning.free_above; }
+
+double least_l2_squared_if_freed(const std::vector<SolvedChart>& charts) {
+  double weighted = 0, area = 0;
+  for (const SolvedChart& c : charts) {
+    weighted += c.kept.area_3d * (may_free_for_less_stretch(c) ? 1 : c.kept.l2_stretch * c.kept.l2_stretch);
+    area += c.kept.area_3d;
+  }
+  return area > 0 ? weighted / area : 0;
 }
 
 void refine_free_outlines(std::vector<SolvedChart>& charts, const ChartOptions& options) {

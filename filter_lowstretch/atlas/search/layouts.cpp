@@ -100,9 +100,9 @@ LaidOutCharts AtlasSearch::tile(std::vector<SolvedChart> charts) const {
   return tiled;
 }
 
-// Free outlines
-// pack no denser than boxes, so the freed charts are packed only if they would win at the
-// coverage the boxes reached. Free charts are turned to their smallest box here only: in the
+// Free outlines pack less densely than boxes, so charts are freed only if they could win at
+// kTuning.most_free_outline_coverage of the coverage the boxes reached with the least stretch
+// freeing could leave, and packed only if they would with the stretch it left. Free charts are turned to their smallest box here only: in the
 // steps before, the texture they would save lets merging go further, down to its least efficiency.
 void pack_by_outline_if_better(const AtlasSearch& s, const std::vector<SolvedChart>& kept, ChartsResult& laid_out) {
   if (kept.empty() || laid_out.error) return;
@@ -112,8 +112,10 @@ void pack_by_outline_if_better(const AtlasSearch& s, const std::vector<SolvedCha
   ChartsResult packed = packed_by_outline(s, turned);
   std::vector<SolvedChart> freed = std::move(turned);
   const double to_beat = packed.error ? texture_efficiency(laid_out) : std::max(texture_efficiency(packed), texture_efficiency(laid_out));
-  const double boxes_coverage = packed.error ? 1 : packed.coverage;
-  if (free_where_it_stretches_less(freed, s.options) > 0 && boxes_coverage / mean_l2_squared(freed) > to_beat) {
+  const double free_coverage = kTuning.most_free_outline_coverage * (packed.error ? 1 : packed.coverage);
+  const auto free_may_win = [&](double l2_squared) { return free_coverage / l2_squared > to_beat; };
+  if (free_may_win(least_l2_squared_if_freed(freed)) && free_where_it_stretches_less(freed, s.options) > 0 &&
+      free_may_win(mean_l2_squared(freed))) {
     ChartsResult free = packed_whole(s, std::move(freed));
     if (!free.error && (packed.error || texture_efficiency(free) > texture_efficiency(packed))) {
       free.notes.push_back("charts mapped free where that stretches them less");
