@@ -102,8 +102,9 @@ LaidOutCharts AtlasSearch::tile(std::vector<SolvedChart> charts) const {
 
 // Free outlines pack less densely than boxes, so charts are freed only if they could win at
 // kTuning.most_free_outline_coverage of the coverage the boxes reached with the least stretch
-// freeing could leave, and packed only if they would with the stretch it left. Free charts are turned to their smallest box here only: in the
-// steps before, the texture they would save lets merging go further, down to its least efficiency.
+// freeing could leave, and packed only if they would with the stretch it left. Free charts are
+// turned to their smallest box here only: in the steps before, the texture they would save lets
+// merging go further, down to its least efficiency.
 void pack_by_outline_if_better(const AtlasSearch& s, const std::vector<SolvedChart>& kept, ChartsResult& laid_out) {
   if (kept.empty() || laid_out.error) return;
   std::vector<SolvedChart> turned = kept;
