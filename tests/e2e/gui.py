@@ -73,11 +73,22 @@ class Gui:
 
     def window(self, name, timeout=30):
         """Id of the visible window whose title matches the regular expression `name`, or None:
-        `xdotool search --sync` waits for it to appear (no polling), under coreutils' timeout."""
-        command = ["timeout", str(timeout), "xdotool", "search", "--sync", "--onlyvisible", "--name", name]
-        proc = subprocess.run(command, env=self.env, capture_output=True, text=True, timeout=timeout + 30)
-        found = proc.stdout.split()
-        return found[0] if proc.returncode == 0 and found else None
+        `xdotool search --sync` waits for it to appear, under coreutils' timeout. Debian 12's
+        xdotool exits on BadWindow when any window closes during its search (a splash screen;
+        xdotool issue 60, fixed after its release), so a failure before the timeout searches again."""
+        end = time.time() + timeout
+        while True:
+            left = max(1, int(end - time.time()))
+            command = ["timeout", str(left), "xdotool", "search", "--sync", "--onlyvisible", "--name", name]
+            proc = subprocess.run(command, env=self.env, capture_output=True, text=True, timeout=left + 30)
+            found = proc.stdout.split()
+            if proc.returncode == 0 and found:
+                return found[0]
+            if time.time() >= end or proc.returncode == 124:  # 124: coreutils' timeout expired
+                if proc.stderr.strip():
+                    print(f"xdotool search {name!r}: {proc.stderr.strip()}")
+                return None
+            time.sleep(0.2)
 
     def settle(self, timeout=10):
         """Waits until the screen stops changing (two grabs 0.2 s apart are equal): the GUI has
