@@ -107,15 +107,6 @@ int free_where_it_stretches_less(std::vector<SolvedChart>& charts, const ChartOp
 
 bool may_free_for_less_stretch(const SolvedChart& chart) { return !chart.free_boundary && chart.kept.l2_stretch > kTuning.free_above; }
 
-double least_l2_squared_if_freed(const std::vector<SolvedChart>& charts) {
-  double weighted = 0, area = 0;
-  for (const SolvedChart& c : charts) {
-    weighted += c.kept.area_3d * (may_free_for_less_stretch(c) ? 1 : c.kept.l2_stretch * c.kept.l2_stretch);
-    area += c.kept.area_3d;
-  }
-  return area > 0 ? weighted / area : 0;
-}
-
 void refine_free_outlines(std::vector<SolvedChart>& charts, const ChartOptions& options) {
   if (!options.disk.refine) return;
   size_t faces = 0;

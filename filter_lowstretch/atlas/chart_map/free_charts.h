@@ -32,10 +32,6 @@ int free_where_it_stretches_less(std::vector<SolvedChart>& charts, const ChartOp
 // Whether free_where_it_stretches_less tries the chart free.
 bool may_free_for_less_stretch(const SolvedChart& chart);
 
-// The charts' mean L2^2 over their 3D area as low as free_where_it_stretches_less could make it:
-// each chart it may free at L2 stretch 1 (no map stretches less), the others as they are.
-double least_l2_squared_if_freed(const std::vector<SolvedChart>& charts);
-
 // With options.disk.refine: every free chart that uses its box better (fill / L2^2) with the
 // natural boundary refined with its boundary moving too (core/refine_stretch.h) is mapped so, if
 // that does not fold over itself. Where to free a chart is decided on maps refined with the

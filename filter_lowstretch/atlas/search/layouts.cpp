@@ -16,13 +16,29 @@
 
 namespace lowstretch {
 
-double mean_l2_squared(const std::vector<SolvedChart>& charts) {
+namespace {
+
+// The charts' mean of l2_squared(chart) over their 3D area (0 without area).
+template <class L2Squared>
+double mean_over_area(const std::vector<SolvedChart>& charts, L2Squared l2_squared) {
   double weighted = 0, area = 0;
   for (const SolvedChart& c : charts) {
-    weighted += c.kept.area_3d * c.kept.l2_stretch * c.kept.l2_stretch;
+    weighted += c.kept.area_3d * l2_squared(c);
     area += c.kept.area_3d;
   }
   return area > 0 ? weighted / area : 0;
+}
+
+// The charts' mean L2^2 as low as free_where_it_stretches_less could make it: each chart it may
+// free at L2 stretch 1 (no map stretches less), the others as they are.
+double least_l2_squared_if_freed(const std::vector<SolvedChart>& charts) {
+  return mean_over_area(charts, [](const SolvedChart& c) { return may_free_for_less_stretch(c) ? 1 : c.kept.l2_stretch * c.kept.l2_stretch; });
+}
+
+}  // namespace
+
+double mean_l2_squared(const std::vector<SolvedChart>& charts) {
+  return mean_over_area(charts, [](const SolvedChart& c) { return c.kept.l2_stretch * c.kept.l2_stretch; });
 }
 
 void fill_empty_texels(const AtlasSearch& s, const std::vector<SolvedChart>& kept, ChartsResult& tiled) {
