@@ -104,6 +104,9 @@ struct AtlasTuning {
   // efficiency. Only on meshes of at most most_free_union_faces, as the free unions: every merge
   // step refines its charts again, which on a larger scan takes minutes.
   int refine_steps = 20;
+  // The merge steps' layouts are judged on maps refined this many steps, and the kept one is laid
+  // out again at refine_steps: most of a refinement's fall in stretch comes in its first steps.
+  int judging_refine_steps = 8;
   // And no UV triangle shrinks below this share of its chart's map (or half its own area):
   // refining without it shrinks a scan's zero-area slivers past the texture (subtexel triangles,
   // which the repair rounds then cut into charts of their own). A disk's own refinement has none:

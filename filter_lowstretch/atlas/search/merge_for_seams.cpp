@@ -2,6 +2,7 @@
 // laid out and measured as the unmerged atlas was.
 #include <algorithm>
 #include <map>
+#include <memory>
 #include <string>
 #include <utility>
 
@@ -25,68 +26,98 @@ double least_efficiency(const ChartOptions& o, double unmerged) {
   return std::max(floor, kTuning.merge_keeps[o.fewer_seams] * unmerged);
 }
 
-// Merge steps of one NeighbourMerging, each laid out: tiled with small charts in empty texels, as
-// the unmerged atlas was measured, or packed by outline (free unions, which tile badly, or a least
-// efficiency of the user's own). The step with the shortest seams that keeps the least efficiency
-// replaces the best atlas.
+// Charts fully mapped by their faces, for steps packed by outline: every chart keeps the map it
+// has alone, and the steps share most charts, so each is freed or mapped once (refined maps cost
+// many solves).
+using MapsByFaces = std::map<std::vector<int>, SolvedChart>;
+
+void map_once(const AtlasSearch& s, MapsByFaces& mapped, std::vector<SolvedChart>& charts) {
+  std::vector<SolvedChart> fresh;
+  std::vector<size_t> at;
+  for (size_t i = 0; i < charts.size(); ++i) {
+    const auto found = mapped.find(charts[i].faces);
+    if (found != mapped.end()) {
+      charts[i] = found->second;
+    } else {
+      fresh.push_back(std::move(charts[i]));
+      at.push_back(i);
+    }
+  }
+  free_the_charts_that_stretch(fresh, s.options, s.cut_must_pay);
+  const size_t faces = faces_in(fresh, 0, fresh.size());
+  for_each_index(int(fresh.size()), [&](int i, int) {
+    map_at_own_shape(fresh[size_t(i)], for_share(s.options.disk, fresh[size_t(i)].faces.size(), faces));
+  }, largest_first(fresh, 0, fresh.size()));
+  refine_free_outlines(fresh, s.options);
+  for (size_t k = 0; k < fresh.size(); ++k) {
+    mapped.emplace(fresh[k].faces, fresh[k]);
+    charts[at[k]] = std::move(fresh[k]);
+  }
+}
+
+// One merge step's charts laid out with s.options: packed by outline, or tiled, with small
+// charts in empty texels (each choice a layout of every chart again) only where the tiling alone
+// falls below `least`: they change no seam, so a step that keeps it without them can be filled
+// once, if it stays the kept one. `filled`: whether it was.
+LaidOutCharts lay_out_step(const AtlasSearch& s, std::vector<SolvedChart> charts, bool by_outline, double least,
+                           MapsByFaces& mapped, bool& filled) {
+  LaidOutCharts laid_out;
+  filled = false;
+  if (by_outline) {
+    map_once(s, mapped, charts);
+    laid_out.atlas = packed_by_outline(s, charts);
+    laid_out.charts = std::move(charts);
+    return laid_out;
+  }
+  free_the_charts_that_stretch(charts, s.options, s.cut_must_pay);
+  laid_out = s.tile(std::move(charts));
+  if (!laid_out.atlas.error && !(texture_efficiency(laid_out.atlas) >= least)) {
+    fill_empty_texels(s, laid_out.charts, laid_out.atlas);
+    filled = true;
+  }
+  return laid_out;
+}
+
+// The merge step that replaces the best atlas: how it was laid out, and its charts before any
+// layout where it is laid out again.
+struct KeptStep {
+  bool any = false, by_outline = false, filled = false;
+  std::vector<SolvedChart> charts;
+};
+
+// A search over the same mesh and best atlas that lays out with `options`.
+std::unique_ptr<AtlasSearch> search_like(const AtlasSearch& s, const ChartOptions& options) {
+  auto like = std::make_unique<AtlasSearch>(s.V, s.F, options);
+  like->unit_V = s.unit_V;
+  like->unit = s.unit;
+  like->result = s.result;
+  like->kept = s.kept;
+  like->made = s.made;
+  like->cut_must_pay = s.cut_must_pay;
+  return like;
+}
+
+// Merge steps of one NeighbourMerging, each laid out on `judge` (tiled, as the unmerged atlas
+// was measured, or packed by outline: free unions, which tile badly, or a least efficiency of the
+// user's own). The step with the shortest seams that keeps the least efficiency is kept.
 struct MergeSteps {
-  AtlasSearch& s;
+  AtlasSearch& judge;
   NeighbourMerging& merging;
   double least;
   bool by_outline;
-  // Small charts go into a tiling's empty texels (each choice a layout of every chart again) only
-  // where the tiling alone falls below the least efficiency: they change no seam, so a step that
-  // keeps it without them is kept unfilled, and filled once if it stays the kept one.
-  bool& kept_unfilled;
-  // Packed by outline, every chart keeps the map it has alone, and the steps share most charts:
-  // each is freed or mapped fully once (refined maps cost many solves), by its faces.
-  std::map<std::vector<int>, SolvedChart> mapped;
-
-  void map_once(std::vector<SolvedChart>& charts) {
-    std::vector<SolvedChart> fresh;
-    std::vector<size_t> at;
-    for (size_t i = 0; i < charts.size(); ++i) {
-      const auto found = mapped.find(charts[i].faces);
-      if (found != mapped.end()) {
-        charts[i] = found->second;
-      } else {
-        fresh.push_back(std::move(charts[i]));
-        at.push_back(i);
-      }
-    }
-    free_the_charts_that_stretch(fresh, s.options, s.cut_must_pay);
-    const size_t faces = faces_in(fresh, 0, fresh.size());
-    for_each_index(int(fresh.size()), [&](int i, int) {
-      map_at_own_shape(fresh[size_t(i)], for_share(s.options.disk, fresh[size_t(i)].faces.size(), faces));
-    }, largest_first(fresh, 0, fresh.size()));
-    refine_free_outlines(fresh, s.options);
-    for (size_t k = 0; k < fresh.size(); ++k) {
-      mapped.emplace(fresh[k].faces, fresh[k]);
-      charts[at[k]] = std::move(fresh[k]);
-    }
-  }
+  KeptStep& kept;
+  bool laid_out_again;  // the kept step's charts are kept, to lay them out again
+  MapsByFaces mapped;
 
   // Whether the first `merges` merges keep the least efficiency.
   bool keep_least(size_t merges) {
     std::vector<SolvedChart> charts = merging.charts_after(merges);
-    LaidOutCharts merged;
     bool filled = false;
-    if (by_outline) {
-      map_once(charts);
-      merged.atlas = packed_by_outline(s, charts);
-      merged.charts = std::move(charts);
-    } else {
-      free_the_charts_that_stretch(charts, s.options, s.cut_must_pay);
-      merged = s.tile(std::move(charts));
-      if (!merged.atlas.error && !(texture_efficiency(merged.atlas) >= least)) {
-        fill_empty_texels(s, merged.charts, merged.atlas);
-        filled = true;
-      }
-    }
+    LaidOutCharts merged = lay_out_step(judge, laid_out_again ? charts : std::move(charts), by_outline, least, mapped, filled);
     if (merged.atlas.error || !(texture_efficiency(merged.atlas) >= least)) return false;
-    if (merged.atlas.seam_length < s.result.seam_length) {
-      s.keep(std::move(merged));
-      kept_unfilled = !by_outline && !filled;
+    if (merged.atlas.seam_length < judge.result.seam_length) {
+      judge.keep(std::move(merged));
+      kept = {true, by_outline, filled, laid_out_again ? std::move(charts) : std::vector<SolvedChart>()};
     }
     return true;
   }
@@ -151,17 +182,32 @@ bool merge_for_shorter_seams(AtlasSearch& s) {
   if (s.result.error || s.cut.empty() || !unmerged_keeps_least()) return false;
   const ChartsResult unmerged = s.result;
   const std::vector<int> twin = opposite_half_edges(s.F);
-  bool kept_unfilled = false;
+  // Refined maps are judged at fewer steps on a search of their own; the kept step alone is laid
+  // out again at the full steps, which only lower its stretch.
+  ChartOptions judging = s.options;
+  judging.disk.refine_iterations = std::min(judging.disk.refine_iterations, kTuning.judging_refine_steps);
+  const bool judged_apart = s.options.disk.refine && judging.disk.refine_iterations < s.options.disk.refine_iterations;
+  std::unique_ptr<AtlasSearch> apart;
+  if (judged_apart) apart = search_like(s, judging);
+  AtlasSearch& judge = judged_apart ? *apart : s;
+  KeptStep kept;
   for (const bool free_unions : {false, true}) {
     // A least efficiency of the user's own is a trade-off chosen as fewer_seams is.
     if (free_unions && ((!s.options.fewer_seams && !users_least) || s.F.rows() > kTuning.most_free_union_faces))
       continue;
     NeighbourMerging merging(s.cut, s.unit_V, s.F, twin, s.options, free_unions);
-    MergeSteps steps{s, merging, least, free_unions || users_least, kept_unfilled, {}};
+    MergeSteps steps{judge, merging, least, free_unions || users_least, kept, judged_apart, {}};
     if (free_unions) merge_by_count(steps);
     else merge_along_growths(steps);
   }
-  if (kept_unfilled) fill_empty_texels(s, s.kept, s.result);
+  if (!kept.any) return false;
+  if (judged_apart) {
+    MapsByFaces mapped;
+    LaidOutCharts laid_out = lay_out_step(s, std::move(kept.charts), kept.by_outline, least, mapped, kept.filled);
+    if (laid_out.atlas.error || !(texture_efficiency(laid_out.atlas) >= least)) return false;
+    s.keep(std::move(laid_out));
+  }
+  if (!kept.by_outline && !kept.filled) fill_empty_texels(s, s.kept, s.result);
   if (s.result.charts.size() >= unmerged.charts.size()) return false;
   s.notes.push_back(std::to_string(unmerged.charts.size() - s.result.charts.size()) + " charts merged for shorter seams (" +
                     number_text(unmerged.seam_length) + " -> " + number_text(s.result.seam_length) + "): efficiency " +
