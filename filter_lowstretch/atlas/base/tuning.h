@@ -82,6 +82,10 @@ struct AtlasTuning {
   double free_faces_must_pay[2] = {2, 1};
 
   // --- Mapping a chart (chart_map/) ---
+  // A chart's passes are solved by the sparse LU below this many unknowns (the core's own bound
+  // is SolverOptions::amg_minimum_rows): KLU factors a chart's system once and its later passes
+  // reuse the pivots, where the multigrid builds its levels and iterates again every pass.
+  int chart_amg_minimum_rows = 30000;
   // How much better a free map must use its box: the rectangle's further passes and the free
   // chart's cell, rarely of its shape, eat smaller gains.
   double free_must_pay = 4;
