@@ -20,6 +20,10 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// From this many unknowns (two per moving vertex) the Newton systems are factored by supernodes
+// in METIS order; below it, in AMD order, as CHOLMOD chooses.
+constexpr int kLeastSupernodalUnknowns = 20000;
+
 // A triangle in a plane of its own: gradients g[k] (2D) of its three hat functions, and its area.
 struct FlatTriangle {
   Eigen::Matrix<double, 3, 2> g;
@@ -238,12 +242,18 @@ Eigen::MatrixXd refine_stretch(const DiskMesh& disk, const Eigen::MatrixXd& uv0,
     if (options.free_boundary || !disk.is_boundary[size_t(i)]) unknown[size_t(i)] = count++;
   if (count == 0) return uv;
   HessianLayout layout = hessian_layout(disk, unknown, count);
-  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> newton;  // SuiteSparse's CHOLMOD
-  // METIS: a costlier analysis (done once) than CHOLMOD's default AMD, for less fill in every
-  // factorization.
+  Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>> newton;  // SuiteSparse's CHOLMOD
   newton.cholmod().nmethods = 1;
-  newton.cholmod().method[0].ordering = CHOLMOD_METIS;
-  {
+  if (2 * count < kLeastSupernodalUnknowns) {
+    // AMD and CHOLMOD's own choice of factorization: on a small system METIS's analysis and the
+    // supernodes' dense blocks cost more than they save.
+    newton.setMode(Eigen::CholmodAuto);
+    newton.cholmod().method[0].ordering = CHOLMOD_AMD;
+    newton.analyzePattern(layout.H);
+  } else {
+    // METIS: a costlier analysis (done once) than AMD, for less fill in every factorization.
+    newton.setMode(Eigen::CholmodSupernodalLLt);
+    newton.cholmod().method[0].ordering = CHOLMOD_METIS;
     const std::lock_guard<std::mutex> one_ordering_at_a_time(metis_lock());
     newton.analyzePattern(layout.H);
   }
