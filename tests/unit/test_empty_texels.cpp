@@ -291,6 +291,25 @@ TEST(PackByOutline, StartingFromAGivenDensityFindsAsDenseALayout) {
   }
 }
 
+// The probe a packing that must reach an efficiency starts with (may_cover_by_outline): at the
+// coverage the search found, the charts fit, as they did there; the whole texture they cannot
+// cover (a gutter around each); with no coverage asked, they may; with no room, they may not.
+TEST(PackByOutline, MayCoverWhatTheSearchCoveredButNotTheWholeTexture) {
+  testmesh::Mesh m;
+  const std::vector<SolvedChart> charts = six_charts(m);
+  const ChartOptions options;
+  double density = 0;
+  const double covered = check_packing(m, charts, options, density);
+  EXPECT_TRUE(may_cover_by_outline(charts, options, covered * (1 - 1e-9)));
+  EXPECT_FALSE(may_cover_by_outline(charts, options, 1));
+  EXPECT_FALSE(may_cover_by_outline(charts, options, 0.99));
+  EXPECT_TRUE(may_cover_by_outline(charts, options, 0));
+  ChartOptions tiny = options;
+  tiny.texture_size = 8;
+  tiny.gutter = 4;  // the border's gutter takes every cell
+  EXPECT_FALSE(may_cover_by_outline(charts, tiny, 0));
+}
+
 // A repair round (lay_out_around): the charts that were not cut stay where the last layout by
 // outline put them; the two halves of the cut one go into the texels left empty, at the same
 // density, a gutter from the others. With no room left for a piece (here a gutter of a quarter of

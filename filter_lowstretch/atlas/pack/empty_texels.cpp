@@ -219,32 +219,48 @@ std::vector<int> put_in_empty_texels(const std::vector<SolvedChart>& charts, con
   return place_in_order(charts, larger_first(charts, guests), outlines, frame, Lowest::Bottom, false, grid, corner_uv, face_chart);
 }
 
-bool pack_by_outline(const std::vector<SolvedChart>& charts, const ChartOptions& options, Eigen::MatrixXd& corner_uv,
-                     std::vector<int>& face_chart, double& density) {
-  const GridFrame frame = grid_frame(options);
-  TexelGrid empty(frame.side);
-  empty.take_border(frame.gutter);
-  std::vector<int> all(charts.size());
-  std::iota(all.begin(), all.end(), 0);
-  const std::array<std::vector<int>, 2> orders{{larger_first(charts, all), longer_box_first(charts, all)}};
+namespace {
+
+// One density's tries of a layout by outline: each order (larger first; longest box first, only
+// where the first leaves a chart without room), each with either way of choosing a turning (each
+// fills some layouts better than the others), the two turnings at once on the thread pool; the
+// first try that fits is kept.
+struct OutlineTries {
+  const std::vector<SolvedChart>& charts;
+  GridFrame frame;
+  TexelGrid empty;
+  std::array<std::vector<int>, 2> orders;
   double area_3d = 0;
-  for (const SolvedChart& c : charts) area_3d += c.kept.area_3d;
-  const double inside = frame.side - 2.0 * frame.gutter;
-  if (!(area_3d > 0) || !(inside > 0)) return false;
-  Eigen::MatrixXd best_uv;
-  std::vector<int> best_chart;
-  // Either way of choosing a turning, each order: each fills some layouts better than the others.
-  // The two turnings of an order are tried at once on the thread pool, the box order only where
-  // the larger-first order leaves a chart without room; the first try that fits is kept.
-  struct Try {
-    Eigen::MatrixXd corner_uv;
-    std::vector<int> face_chart;
-    bool fits = false;
-  };
-  const auto fits = [&](double at) {
+
+  OutlineTries(const std::vector<SolvedChart>& charts, const ChartOptions& options)
+      : charts(charts), frame(grid_frame(options)), empty(frame.side) {
+    empty.take_border(frame.gutter);
+    std::vector<int> all(charts.size());
+    std::iota(all.begin(), all.end(), 0);
+    orders = {{larger_first(charts, all), longer_box_first(charts, all)}};
+    for (const SolvedChart& c : charts) area_3d += c.kept.area_3d;
+  }
+  bool any_room() const { return area_3d > 0 && frame.side - 2.0 * frame.gutter > 0; }
+  // The density at which the charts would cover every cell inside the border's gutter.
+  double full_density() const {
+    const double inside = frame.side - 2.0 * frame.gutter;
+    return inside * inside / area_3d;
+  }
+  // Where every chart is laid out at `density`, the share of the texture they cover.
+  double coverage_at(double density) const { return density * area_3d / (frame.scale * frame.scale); }
+
+  // Whether all charts fit at density `at`: if so, `corner_uv` and `face_chart` with their corners
+  // and charts written are moved into `fitted_uv` and `fitted_chart`.
+  bool fit(double at, const Eigen::MatrixXd& corner_uv, const std::vector<int>& face_chart, Eigen::MatrixXd& fitted_uv,
+           std::vector<int>& fitted_chart) const {
     Outlines outlines(charts, at, frame.side);
     outlines.draw_all();
     for (const std::vector<int>& order : orders) {
+      struct Try {
+        Eigen::MatrixXd corner_uv;
+        std::vector<int> face_chart;
+        bool fits = false;
+      };
       std::array<Try, 2> tries{{{corner_uv, face_chart}, {corner_uv, face_chart}}};
       for_each_index(2, [&](int i, int) {
         TexelGrid grid = empty;
@@ -254,20 +270,44 @@ bool pack_by_outline(const std::vector<SolvedChart>& charts, const ChartOptions&
       });
       for (Try& t : tries)
         if (t.fits) {
-          best_uv = std::move(t.corner_uv);
-          best_chart = std::move(t.face_chart);
+          fitted_uv = std::move(t.corner_uv);
+          fitted_chart = std::move(t.face_chart);
           return true;
         }
     }
     return false;
-  };
-  const double full = inside * inside / area_3d;
-  const double found = densest_that_fits(fits, full, density);
+  }
+};
+
+}  // namespace
+
+bool pack_by_outline(const std::vector<SolvedChart>& charts, const ChartOptions& options, Eigen::MatrixXd& corner_uv,
+                     std::vector<int>& face_chart, double& density) {
+  const OutlineTries tries(charts, options);
+  if (!tries.any_room()) return false;
+  Eigen::MatrixXd best_uv;
+  std::vector<int> best_chart;
+  const auto fits = [&](double at) { return tries.fit(at, corner_uv, face_chart, best_uv, best_chart); };
+  const double found = densest_that_fits(fits, tries.full_density(), density);
   if (!(found > 0)) return false;
   density = found;
   corner_uv = std::move(best_uv);
   face_chart = std::move(best_chart);
   return true;
+}
+
+bool may_cover_by_outline(const std::vector<SolvedChart>& charts, const ChartOptions& options, double coverage) {
+  const OutlineTries tries(charts, options);
+  if (!tries.any_room()) return false;
+  if (!(coverage > 0)) return true;
+  const double at = coverage / tries.coverage_at(1);
+  if (at >= tries.full_density()) return false;  // more cells than there are
+  int faces = 0;
+  for (const SolvedChart& c : charts)
+    for (const int f : c.faces) faces = std::max(faces, f + 1);
+  Eigen::MatrixXd fitted_uv;
+  std::vector<int> fitted_chart;
+  return tries.fit(at, Eigen::MatrixXd::Zero(faces, 6), std::vector<int>(size_t(faces), 0), fitted_uv, fitted_chart);
 }
 
 }  // namespace lowstretch

@@ -52,4 +52,9 @@ std::vector<int> put_in_empty_texels(const std::vector<SolvedChart>& charts, con
 bool pack_by_outline(const std::vector<SolvedChart>& charts, const ChartOptions& options, Eigen::MatrixXd& corner_uv,
                      std::vector<int>& face_chart, double& density);
 
+// Whether the charts, packed by outline, may cover `coverage` of the texture: they fit at the
+// density that would (one try of pack_by_outline's). A packing that must reach an efficiency is
+// given up at once where they do not.
+bool may_cover_by_outline(const std::vector<SolvedChart>& charts, const ChartOptions& options, double coverage);
+
 }  // namespace lowstretch

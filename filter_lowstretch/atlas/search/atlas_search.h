@@ -78,8 +78,9 @@ void fill_empty_texels(const AtlasSearch& s, const std::vector<SolvedChart>& kep
 
 // The charts packed by their outlines instead of tiled (pack_by_outline), each on its own
 // rectangle or free; also with the flat ones as seen along their normal, if any is: the better
-// of the two, or an error.
-ChartsResult packed_by_outline(const AtlasSearch& s, std::vector<SolvedChart> charts);
+// of the two, or an error. Only packings that may reach `least_efficiency` are made (an error
+// where none may).
+ChartsResult packed_by_outline(const AtlasSearch& s, std::vector<SolvedChart> charts, double least_efficiency = 0);
 
 // `laid_out` (a layout of `kept`) replaced by the same charts packed by outline where that uses
 // the texture better: as they are, or each mapped free where that stretches it less.

@@ -79,9 +79,22 @@ ChartsResult packed_whole(const AtlasSearch& s, std::vector<SolvedChart> charts)
   return atlas_of(std::move(charts), std::move(all), s.unit_V, s.F, s.unit, int(s.V.rows()), s.options);
 }
 
+// packed_whole, made only where the charts fit at the density that reaches the least efficiency
+// with their L2 stretch as mapped (a little less: kTuning.least_density_share); a packing below
+// it is of no use to the caller, and the search for the densest layout takes many more tries.
+ChartsResult packed_whole_if_it_may_reach(const AtlasSearch& s, std::vector<SolvedChart> charts, double least_efficiency) {
+  const double coverage = kTuning.least_density_share * least_efficiency * mean_l2_squared(charts);
+  if (least_efficiency > 0 && !may_cover_by_outline(charts, s.options, coverage)) {
+    ChartsResult below;
+    below.error = {ErrorCode::ChartsNotPacked, static_cast<long long>(charts.size()), ""};
+    return below;
+  }
+  return packed_whole(s, std::move(charts));
+}
+
 }  // namespace
 
-ChartsResult packed_by_outline(const AtlasSearch& s, std::vector<SolvedChart> charts) {
+ChartsResult packed_by_outline(const AtlasSearch& s, std::vector<SolvedChart> charts, double least_efficiency) {
   map_all_at_own_shape(charts, s.options);  // once for both packings
   std::vector<SolvedChart> flat_seen = charts;
   see_flat_charts_along_normal(flat_seen);
@@ -92,8 +105,8 @@ ChartsResult packed_by_outline(const AtlasSearch& s, std::vector<SolvedChart> ch
   // The packings at once, on the thread pool: a packing is one thread's work.
   ChartsResult packed, flat;
   for_each_index(any_flat ? 2 : 1, [&](int i, int) {
-    if (i == 0) packed = packed_whole(s, charts);
-    else flat = packed_whole(s, std::move(flat_seen));
+    if (i == 0) packed = packed_whole_if_it_may_reach(s, charts, least_efficiency);
+    else flat = packed_whole_if_it_may_reach(s, std::move(flat_seen), least_efficiency);
   });
   if (any_flat && !flat.error && (packed.error || texture_efficiency(flat) > texture_efficiency(packed))) {
     flat.notes.push_back("flat charts as seen along their normal");
@@ -117,8 +130,9 @@ LaidOutCharts AtlasSearch::tile(std::vector<SolvedChart> charts) const {
 }
 
 // Free outlines pack less densely than boxes, so charts are freed only if they could win at
-// kTuning.most_free_outline_coverage of the coverage the boxes reached with the least stretch
-// freeing could leave, and packed only if they would with the stretch it left. Free charts are
+// kTuning.most_free_outline_coverage of the coverage the boxes reached (of the whole texture where
+// the boxes, given up below the tiling, reached none) with the least stretch freeing could leave,
+// and packed only if they would with the stretch it left. Free charts are
 // turned to their smallest box here only: in the steps before, the texture they would save lets
 // merging go further, down to its least efficiency.
 void pack_by_outline_if_better(const AtlasSearch& s, const std::vector<SolvedChart>& kept, ChartsResult& laid_out) {
@@ -126,14 +140,14 @@ void pack_by_outline_if_better(const AtlasSearch& s, const std::vector<SolvedCha
   std::vector<SolvedChart> turned = kept;
   map_all_at_own_shape(turned, s.options);  // turned as mapped, and mapped once for every packing
   turn_free_charts_to_smallest_box(turned);
-  ChartsResult packed = packed_by_outline(s, turned);
+  ChartsResult packed = packed_by_outline(s, turned, texture_efficiency(laid_out));
   std::vector<SolvedChart> freed = std::move(turned);
   const double to_beat = packed.error ? texture_efficiency(laid_out) : std::max(texture_efficiency(packed), texture_efficiency(laid_out));
   const double free_coverage = kTuning.most_free_outline_coverage * (packed.error ? 1 : packed.coverage);
   const auto free_may_win = [&](double l2_squared) { return free_coverage / l2_squared > to_beat; };
   if (free_may_win(least_l2_squared_if_freed(freed)) && free_where_it_stretches_less(freed, s.options) > 0 &&
       free_may_win(mean_l2_squared(freed))) {
-    ChartsResult free = packed_whole(s, std::move(freed));
+    ChartsResult free = packed_whole_if_it_may_reach(s, std::move(freed), to_beat);
     if (!free.error && (packed.error || texture_efficiency(free) > texture_efficiency(packed))) {
       free.notes.push_back("charts mapped free where that stretches them less");
       packed = std::move(free);

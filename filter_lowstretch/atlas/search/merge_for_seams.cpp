@@ -65,7 +65,7 @@ LaidOutCharts lay_out_step(const AtlasSearch& s, std::vector<SolvedChart> charts
   filled = false;
   if (by_outline) {
     map_once(s, mapped, charts);
-    laid_out.atlas = packed_by_outline(s, charts);
+    laid_out.atlas = packed_by_outline(s, charts, least);
     laid_out.charts = std::move(charts);
     return laid_out;
   }
@@ -176,7 +176,7 @@ bool merge_for_shorter_seams(AtlasSearch& s) {
   const auto unmerged_keeps_least = [&] {
     if (texture_efficiency(s.result) >= least) return true;
     if (!users_least) return false;
-    const ChartsResult packed = packed_by_outline(s, s.kept);
+    const ChartsResult packed = packed_by_outline(s, s.kept, least);
     return !packed.error && texture_efficiency(packed) >= least;
   };
   if (s.result.error || s.cut.empty() || !unmerged_keeps_least()) return false;
