@@ -130,8 +130,8 @@ LaidOutCharts AtlasSearch::tile(std::vector<SolvedChart> charts) const {
 }
 
 // Free outlines pack less densely than boxes, so charts are freed only if they could win at
-// kTuning.most_free_outline_coverage of the coverage the boxes reached (of the whole texture where
-// the boxes, given up below the tiling, reached none) with the least stretch freeing could leave,
+// kTuning.most_free_outline_coverage of the coverage the boxes reached (or were asked for, where
+// they were given up below the tiling) with the least stretch freeing could leave,
 // and packed only if they would with the stretch it left. Free charts are
 // turned to their smallest box here only: in the steps before, the texture they would save lets
 // merging go further, down to its least efficiency.
@@ -143,7 +143,10 @@ void pack_by_outline_if_better(const AtlasSearch& s, const std::vector<SolvedCha
   ChartsResult packed = packed_by_outline(s, turned, texture_efficiency(laid_out));
   std::vector<SolvedChart> freed = std::move(turned);
   const double to_beat = packed.error ? texture_efficiency(laid_out) : std::max(texture_efficiency(packed), texture_efficiency(laid_out));
-  const double free_coverage = kTuning.most_free_outline_coverage * (packed.error ? 1 : packed.coverage);
+  // Boxes given up below the tiling reach less than the coverage their probe asked for.
+  const double boxes_coverage =
+      packed.error ? kTuning.least_density_share * texture_efficiency(laid_out) * mean_l2_squared(freed) : packed.coverage;
+  const double free_coverage = kTuning.most_free_outline_coverage * boxes_coverage;
   const auto free_may_win = [&](double l2_squared) { return free_coverage / l2_squared > to_beat; };
   if (free_may_win(least_l2_squared_if_freed(freed)) && free_where_it_stretches_less(freed, s.options) > 0 &&
       free_may_win(mean_l2_squared(freed))) {
