@@ -272,10 +272,13 @@ bool LaplacianSolver::solve(const std::vector<double>& weights, const Eigen::Mat
   if (matrix_.rows() == 0) return true;  // every vertex is on the boundary
   report_.used = options_.method == LinearSolver::Amg && matrix_.rows() >= options_.amg_minimum_rows ? LinearSolver::Amg : LinearSolver::Direct;
   if (report_.used == LinearSolver::Amg) {
-    if (solve_amg(rhs, x)) {
+    // A system multigrid failed on once (zero-area triangles, extreme weights) fails again with the
+    // next pass's weights: those passes go straight to the direct solve.
+    if (!multigrid_failed_ && solve_amg(rhs, x)) {
       scatter(x, uv);
       return true;
     }
+    multigrid_failed_ = true;
     report_.used = LinearSolver::Direct;
     report_.fell_back = true;
   }

@@ -12,8 +12,8 @@
 // - Direct: sparse LU, symbolic analysis once: KLU for small systems (small_system_lu.h),
 //   UMFPACK with METIS ordering for large ones.
 // An AMG solve that does not converge, or whose true residual is too large, falls back to the
-// direct solve for that pass; the pass's SolveReport says so. Small systems are always solved
-// directly.
+// direct solve for that pass and every later one; each pass's SolveReport says so. Small systems
+// are always solved directly.
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/Sparse>
@@ -30,7 +30,7 @@ namespace lowstretch {
 // What one solve() did, for the pass's metrics.
 struct SolveReport {
   LinearSolver used = LinearSolver::Direct;  // Direct also when AMG fell back
-  bool fell_back = false;                    // AMG was asked for but did not converge
+  bool fell_back = false;                    // AMG was asked for but did not converge, in this pass or an earlier one
   int iterations = 0;                        // Krylov iterations, the larger of u and v
   double relative_residual = 0;              // max over u, v of |A x - b| / |b|
   double seconds_assembly = 0, seconds_setup = 0, seconds_solve = 0;
@@ -68,6 +68,7 @@ class LaplacianSolver {
   struct Transfers;                      // the multigrid's P and R per level, kept across passes
   std::unique_ptr<Transfers> transfers_;
   SolveReport report_;
+  bool multigrid_failed_ = false;  // on an earlier pass: later passes are solved directly
 };
 
 }  // namespace lowstretch

@@ -1,5 +1,6 @@
 #include "core/parameterize.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -107,12 +108,13 @@ PassMetrics measure_pass(const DiskMesh& disk, const Eigen::MatrixXd& uv, const 
   return m;
 }
 
+// Multigrid is not tried again after the pass it failed in (laplacian_solver.h).
 void note_solver_fallbacks(Result& result) {
-  int fell_back = 0;
-  for (const PassMetrics& p : result.passes) fell_back += p.solver_fell_back;
-  if (fell_back > 0)
-    result.notes.push_back("multigrid did not converge in " + std::to_string(fell_back) + " of " +
-                           std::to_string(result.passes.size()) + " passes: the sparse LU solved them");
+  const auto first = std::find_if(result.passes.begin(), result.passes.end(), [](const PassMetrics& p) { return p.solver_fell_back; });
+  if (first == result.passes.end()) return;
+  const long pass = long(first - result.passes.begin()), after = long(result.passes.size()) - pass - 1;
+  result.notes.push_back("multigrid did not converge in pass " + std::to_string(pass) + (pass == 0 ? " (U0)" : "") +
+                         ": the sparse LU solved it" + (after == 1 ? " and the pass after it" : after > 1 ? " and the " + std::to_string(after) + " passes after it" : ""));
 }
 
 // The kept pass in the caller's rows: UV (scaled into [0,1]^2 if it left it), vertex and face

@@ -92,8 +92,8 @@ std::vector<OptionRow> make_table() {
        "unmerged atlas's (0.555 and 75% with Fewer seams).",
        [](const ChartOptions& o) { return o.min_efficiency; }, [](ChartOptions& o, double v) { o.min_efficiency = v; }},
       {"solver", "--solver", "", "", OptionKind::Choice, {"amg", "direct"}, {}, "", kToolOnly,
-       "How each pass is solved: algebraic multigrid with BiCGStab (falling back to the sparse LU for a pass "
-       "where it does not converge; an atlas's charts below 30,000 unknowns by the LU), or the sparse LU (KLU "
+       "How each pass is solved: algebraic multigrid with BiCGStab (the sparse LU from the pass where it does "
+       "not converge on; an atlas's charts below 30,000 unknowns by the LU), or the sparse LU (KLU "
        "below 30,000 unknowns, UMFPACK above).",
        [](const ChartOptions& o) { return double(o.disk.solver.method); },
        [](ChartOptions& o, double v) { o.disk.solver.method = LinearSolver(int(v)); }},
