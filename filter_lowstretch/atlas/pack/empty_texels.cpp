@@ -90,10 +90,7 @@ void place_guest(const SolvedChart& chart, int g, const Outline& best, int x, in
   for (size_t r = 0; r < best.rows.size(); ++r)
     for (const auto& run : best.rows[r])
       grid.take(x + run.first - gutter, y + int(r) - gutter, x + run.second + gutter, y + int(r) + 1 + gutter);
-  int x0 = grid.side(), x1 = 0;
-  for (const auto& row : best.rows)
-    for (const auto& run : row) x0 = std::min(x0, run.first), x1 = std::max(x1, run.second);
-  grid.count_runs(y - gutter, y + int(best.rows.size()) + gutter, x + x0 - gutter, x + x1 + gutter);
+  grid.count_runs(y - gutter, y + int(best.rows.size()) + gutter);
   const Eigen::Vector2d origin(x, y);
   for (size_t j = 0; j < chart.faces.size(); ++j) {
     const int f = chart.faces[j];

@@ -3,7 +3,6 @@
 #pragma once
 #include <Eigen/Core>
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -12,20 +11,22 @@
 
 namespace lowstretch {
 
-// Which cells of a square grid are taken (a chart, or within the gutter of one), and for each
-// cell how many free cells follow it in its row: a box fits where every row it spans has room.
+// Which cells of a square grid are taken (a chart, or within the gutter of one), a bit each, 64
+// cells of a row to a word (as xatlas's BitImage): a run of an outline is tested a word at a time,
+// and copying the grid for another try is cheap. For each row, its longest stretch of free cells.
 class TexelGrid {
  public:
   explicit TexelGrid(int side)
-      : side_(side), taken_(size_t(side) * size_t(side), 0), run_(taken_.size(), 0), widest_(size_t(side), 0) {
-    assert(side <= std::numeric_limits<Run>::max());
-  }
+      : side_(side), words_(size_t(side + 63) / 64), bits_(size_t(side) * words_, 0), widest_(size_t(side), side) {}
   int side() const { return side_; }
   void take(int x0, int y0, int x1, int y1) {  // cells [x0, x1) x [y0, y1), clipped
     x0 = std::max(x0, 0), y0 = std::max(y0, 0), x1 = std::min(x1, side_), y1 = std::min(y1, side_);
-    for (int y = y0; y < y1 && x0 < x1; ++y) std::fill(taken_.begin() + long(index(x0, y)), taken_.begin() + long(index(x1, y)), 1);
+    for (int y = y0; y < y1 && x0 < x1; ++y) {
+      Word* row = row_of(y);
+      for (int w = x0 / 64; w <= (x1 - 1) / 64; ++w) row[w] |= mask(x0 - 64 * w, x1 - 64 * w);
+    }
   }
-  // Takes the cells within `gutter` of the border, and counts the free runs of every row.
+  // Takes the cells within `gutter` of the border, and counts the free stretches of every row.
   void take_border(int gutter) {
     take(0, 0, side_, gutter);
     take(0, side_ - gutter, side_, side_);
@@ -34,55 +35,26 @@ class TexelGrid {
     count_runs(0, side_);
   }
   // Takes every cell within `by` cells of a taken one (a square around each): each row ORed with
-  // its neighbours `by` cells either way, then with the rows `by` above and below (whole rows at
-  // a time, which the compiler vectorizes; a column at a time strides through memory).
+  // itself shifted up to `by` cells either way, then with the rows up to `by` above and below.
   void grow(int by) {
-    const size_t n = size_t(side_);
-    std::vector<char> row(n);
-    for (size_t y = 0; y < n; ++y) {
-      char* __restrict cells = taken_.data() + y * n;
-      const char* __restrict before = row.data();
-      std::copy(cells, cells + n, row.begin());
-      for (size_t shift = 1; shift <= size_t(by) && shift < n; ++shift) {
-        for (size_t x = 0; x + shift < n; ++x) cells[x] |= before[x + shift];
-        for (size_t x = shift; x < n; ++x) cells[x] |= before[x - shift];
-      }
+    std::vector<Word> before(words_), grown(bits_.size());
+    for (int y = 0; y < side_; ++y) {
+      Word* row = row_of(y);
+      std::copy(row, row + words_, before.begin());
+      for (int shift = 1; shift <= by && shift < side_; ++shift)
+        for (size_t w = 0; w < words_; ++w) row[w] |= shifted(before, w, shift) | shifted(before, w, -shift);
+      row[words_ - 1] &= mask(0, side_ - 64 * int(words_ - 1));  // no cell past the side
     }
-    std::vector<char> grown(taken_.size());
-    for (size_t y = 0; y < n; ++y) {
-      char* out = grown.data() + y * n;
-      const size_t first = y >= size_t(by) ? y - size_t(by) : 0, last = std::min(n - 1, y + size_t(by));
-      std::copy(taken_.data() + first * n, taken_.data() + (first + 1) * n, out);
-      for (size_t near = first + 1; near <= last; ++near) {
-        const char* cells = taken_.data() + near * n;
-        for (size_t x = 0; x < n; ++x) out[x] |= cells[x];
-      }
+    for (int y = 0; y < side_; ++y) {
+      Word* out = grown.data() + size_t(y) * words_;
+      for (int near = std::max(0, y - by); near <= std::min(side_ - 1, y + by); ++near)
+        for (size_t w = 0; w < words_; ++w) out[w] |= row_of(near)[w];
     }
-    taken_.swap(grown);
+    bits_.swap(grown);
   }
-  // Free cells: how many free cells start there; taken ones: minus how many taken cells do, so
-  // that a search skips a taken stretch at once.
-  void count_runs(int y0, int y1) { count_runs(y0, y1, 0, side_); }
-  // The same where only cells of columns [x0, x1) changed: a cell's count follows from its own
-  // and the next one's, so the counts right of x1 stay, and left of x0 they stay from the first
-  // that comes out as before.
-  void count_runs(int y0, int y1, int x0, int x1) {
-    x0 = std::max(x0, 0), x1 = std::min(x1, side_);
-    for (int y = std::max(y0, 0); y < std::min(y1, side_); ++y) {
-      const char* cells = taken_.data() + index(0, y);
-      Run* runs = run_.data() + index(0, y);
-      const int next = x1 < side_ ? runs[x1] : 0;
-      int free = std::max(next, 0), taken = std::max(-next, 0);
-      for (int x = x1; x-- > 0;) {
-        const bool is_taken = cells[x] != 0;
-        free = is_taken ? 0 : free + 1;
-        taken = is_taken ? taken + 1 : 0;
-        const Run run = Run(is_taken ? -taken : free);
-        if (x < x0 && runs[x] == run) break;
-        runs[x] = run;
-      }
-      widest_[size_t(y)] = std::max<int>(0, *std::max_element(runs, runs + side_));
-    }
+  // Counts the longest free stretch of rows [y0, y1) after cells were taken there.
+  void count_runs(int y0, int y1) {
+    for (int y = std::max(y0, 0); y < std::min(y1, side_); ++y) widest_[size_t(y)] = widest_free(y);
   }
   // The first place (lowest row, then column; rows up to last_y) where an outline's cells are all
   // free; false if none. rows[r]: the outline's runs of cells [begin, end) in its row r.
@@ -106,9 +78,10 @@ class TexelGrid {
         for (size_t k = 0; k < order.size() && !skip; ++k) {
           const int r = order[k];
           for (const auto& run : rows[size_t(r)]) {
-            const int free = run_[index(x + run.first, y + r)];
-            if (free >= run.second - run.first) continue;
-            skip = free < 0 ? -free : free + 1;  // past the taken cells, or past the one that ends the free ones
+            const int taken = last_taken(y + r, x + run.first, x + run.second);
+            if (taken < 0) continue;
+            // Every place until the run starts past the taken cells from there covers one of them.
+            skip = first_free(y + r, taken) - (x + run.first);
             break;
           }
           // The row that failed is tried first from here: nearby places mostly fail there too
@@ -126,11 +99,68 @@ class TexelGrid {
   }
 
  private:
-  size_t index(int x, int y) const { return size_t(y) * size_t(side_) + size_t(x); }
-  using Run = int16_t;  // a grid side is at most kTuning.most_grid_side: half the memory of int
+  using Word = uint64_t;
+  Word* row_of(int y) { return bits_.data() + size_t(y) * words_; }
+  const Word* row_of(int y) const { return bits_.data() + size_t(y) * words_; }
+  // The bits of cells [a, b) of a word, a and b clipped to [0, 64].
+  static Word mask(int a, int b) {
+    a = std::max(a, 0), b = std::min(b, 64);
+    if (a >= b) return 0;
+    const Word upto_b = b == 64 ? ~Word(0) : (Word(1) << b) - 1;
+    return upto_b & ~((Word(1) << a) - 1);
+  }
+  // Word w of a row moved `by` cells towards higher x (lower, if negative).
+  static Word shifted(const std::vector<Word>& row, size_t w, int by) {
+    const long from = long(w) * 64 - by;  // the cell that lands on the word's first bit
+    const long q = from >= 0 ? from / 64 : -((63 - from) / 64), r = from - 64 * q;
+    const auto word = [&](long i) { return i >= 0 && i < long(row.size()) ? row[size_t(i)] : Word(0); };
+    return r == 0 ? word(q) : word(q) >> r | word(q + 1) << (64 - r);
+  }
+  // The last taken cell of row y in [x0, x1), or -1: the end words masked, the middle ones whole.
+  int last_taken(int y, int x0, int x1) const {
+    if (x0 >= x1) return -1;
+    const Word* row = row_of(y);
+    const int w0 = x0 / 64, w1 = (x1 - 1) / 64;
+    const Word from_x0 = ~Word(0) << (x0 % 64), to_x1 = ~Word(0) >> (63 - (x1 - 1) % 64);
+    const auto last_in = [](int w, Word hit) { return 64 * w + 63 - __builtin_clzll(hit); };
+    if (w0 == w1) {
+      const Word hit = row[w0] & from_x0 & to_x1;
+      return hit ? last_in(w0, hit) : -1;
+    }
+    if (const Word hit = row[w1] & to_x1) return last_in(w1, hit);
+    for (int w = w1 - 1; w > w0; --w)
+      if (row[w]) return last_in(w, row[w]);
+    const Word hit = row[w0] & from_x0;
+    return hit ? last_in(w0, hit) : -1;
+  }
+  // The first free cell of row y from x on, or the side.
+  int first_free(int y, int x) const {
+    const Word* row = row_of(y);
+    for (int w = x / 64; w < int(words_); ++w)
+      if (const Word free = ~row[w] & mask(x - 64 * w, 64)) return std::min(side_, 64 * w + __builtin_ctzll(free));
+    return side_;
+  }
+  // The longest stretch of free cells in row y.
+  int widest_free(int y) const {
+    const Word* row = row_of(y);
+    int widest = 0, run = 0;
+    for (int x = 0; x < side_;) {
+      const int w = x / 64, bit = x % 64;
+      const Word rest = row[w] >> bit;  // the cells from x to the word's end, low bit first
+      const int left = std::min(64, side_ - 64 * w) - bit;
+      const int free = rest == 0 ? left : std::min(left, __builtin_ctzll(rest));
+      run += free, x += free;
+      if (free == left) continue;
+      widest = std::max(widest, run);
+      run = 0;
+      const Word ones = ~(row[w] >> (x % 64));
+      x += ones == 0 ? 64 - x % 64 : __builtin_ctzll(ones);
+    }
+    return std::max(widest, run);
+  }
   int side_;
-  std::vector<char> taken_;
-  std::vector<Run> run_;
+  size_t words_;
+  std::vector<Word> bits_;
   std::vector<int> widest_;  // per row: its longest stretch of free cells
 };
 
