@@ -99,7 +99,7 @@ TEST(TexelGrid, OutlinesGoWhereAPlainCellSearchPutsThem) {
             grid.take(x + run.first, y + int(r), x + run.second, y + int(r) + 1);
             cells.take(x + run.first, y + int(r), x + run.second, y + int(r) + 1);
           }
-        grid.count_runs(y, y + int(rows.size()));
+        grid.recount_widest(y, y + int(rows.size()));
       }
     }
   }
@@ -109,7 +109,7 @@ TEST(TexelGrid, RowsAboveLastYAreNotSearched) {
   TexelGrid grid(128);
   grid.take_border(0);
   grid.take(0, 0, 128, 50);  // the first 50 rows full
-  grid.count_runs(0, 50);
+  grid.recount_widest(0, 50);
   const Rows box(4, {{0, 70}});
   int x = 0, y = 0;
   EXPECT_FALSE(grid.first_fit(box, 49, x, y));

@@ -31,7 +31,7 @@ std::vector<Eigen::Vector2d> free_squares(const Eigen::MatrixXd& corner_uv, cons
     if (!grid.first_fit(rows, cells, x, y)) return {};
     // The square's own cells and its gutter: the next square keeps the gutter from it.
     grid.take(x - gutter, y - gutter, x + square + gutter, y + square + gutter);
-    grid.count_runs(y - gutter, y + square + gutter);
+    grid.recount_widest(y - gutter, y + square + gutter);
     corners.emplace_back(double(x) / cells, double(y) / cells);
   }
   return corners;

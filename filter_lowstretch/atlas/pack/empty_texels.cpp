@@ -90,7 +90,7 @@ void place_guest(const SolvedChart& chart, int g, const Outline& best, int x, in
   for (size_t r = 0; r < best.rows.size(); ++r)
     for (const auto& run : best.rows[r])
       grid.take(x + run.first - gutter, y + int(r) - gutter, x + run.second + gutter, y + int(r) + 1 + gutter);
-  grid.count_runs(y - gutter, y + int(best.rows.size()) + gutter);
+  grid.recount_widest(y - gutter, y + int(best.rows.size()) + gutter);
   const Eigen::Vector2d origin(x, y);
   for (size_t j = 0; j < chart.faces.size(); ++j) {
     const int f = chart.faces[j];

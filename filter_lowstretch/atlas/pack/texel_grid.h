@@ -26,13 +26,13 @@ class TexelGrid {
       for (int w = x0 / 64; w <= (x1 - 1) / 64; ++w) row[w] |= mask(x0 - 64 * w, x1 - 64 * w);
     }
   }
-  // Takes the cells within `gutter` of the border, and counts the free stretches of every row.
+  // Takes the cells within `gutter` of the border, and recounts the longest free stretch of every row.
   void take_border(int gutter) {
     take(0, 0, side_, gutter);
     take(0, side_ - gutter, side_, side_);
     take(0, 0, gutter, side_);
     take(side_ - gutter, 0, side_, side_);
-    count_runs(0, side_);
+    recount_widest(0, side_);
   }
   // Takes every cell within `by` cells of a taken one (a square around each): each row ORed with
   // itself shifted up to `by` cells either way, then with the rows up to `by` above and below.
@@ -53,7 +53,7 @@ class TexelGrid {
     bits_.swap(grown);
   }
   // Counts the longest free stretch of rows [y0, y1) after cells were taken there.
-  void count_runs(int y0, int y1) {
+  void recount_widest(int y0, int y1) {
     for (int y = std::max(y0, 0); y < std::min(y1, side_); ++y) widest_[size_t(y)] = widest_free(y);
   }
   // The first place (lowest row, then column; rows up to last_y) where an outline's cells are all
