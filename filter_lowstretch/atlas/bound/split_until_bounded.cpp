@@ -11,7 +11,6 @@
 #include "atlas/bound/deciding_map.h"
 #include "atlas/chart_map/chart_threads.h"
 #include "core/half_edges.h"
-#include "atlas/cut/split_chart.h"
 
 namespace lowstretch {
 
@@ -42,11 +41,11 @@ struct Cut {
 // Empty if the chart cannot be cut into parts that are disks with holes (a part whose faces meet
 // at a single vertex); a cut ahead that leaves such a part is not made.
 Cut cut_with_cuts_ahead(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, const std::vector<int>& twin,
-                        const SolvedChart& chart, int ahead, std::vector<int>& local_of) {
+                        const SolvedChart& chart, int ahead, const SplitOptions& split, std::vector<int>& local_of) {
   Cut cut;
   std::vector<size_t> level_start = {0};  // pieces [level_start[k], level_start[k + 1]) are level k's
   const auto add_parts = [&](const std::vector<int>& faces, int parent) {
-    std::vector<std::vector<int>> parts = split_chart(unit_V, F, twin, faces);
+    std::vector<std::vector<int>> parts = split_chart(unit_V, F, twin, faces, split);
     if (parts.size() < 2) return false;
     for (std::vector<int>& part : parts) {
       cut.pieces.emplace_back();
@@ -159,6 +158,7 @@ struct Splitting {
   const Eigen::MatrixXd& unit_V;
   const Eigen::MatrixXi& F;
   const ChartOptions& options;
+  const SplitOptions& split;
   std::vector<int> twin;                      // opposite_half_edges(F)
   std::vector<std::vector<int>> local_of;     // make_chart_mesh's scratch, per worker
   ChartTree tree;
@@ -192,7 +192,7 @@ std::vector<Cut> cut_in_parallel(Splitting& s, const std::vector<int>& to_cut) {
     if (s.local_of[size_t(worker)].empty()) s.local_of[size_t(worker)].assign(size_t(s.unit_V.rows()), -1);
     const SolvedChart& chart = s.tree.nodes[size_t(to_cut[size_t(k)])];
     cuts[size_t(k)] = cut_with_cuts_ahead(s.unit_V, s.F, s.twin, chart, cuts_ahead(chart.kept, chart.faces.size(), s.options),
-                                          s.local_of[size_t(worker)]);
+                                          s.split, s.local_of[size_t(worker)]);
   }, order);
   return cuts;
 }
@@ -287,8 +287,8 @@ bool parts_meet_the_bound(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
 
 Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, std::vector<std::vector<int>> components,
                           const ChartOptions& options, std::vector<SolvedChart>& leaves, std::vector<SolvedChart>& uncut,
-                          std::vector<std::string>& notes) {
-  Splitting s{unit_V, F, options, opposite_half_edges(F), std::vector<std::vector<int>>(kMostThreads), ChartTree(), 0, false};
+                          std::vector<std::string>& notes, const SplitOptions& split) {
+  Splitting s{unit_V, F, options, split, opposite_half_edges(F), std::vector<std::vector<int>>(kMostThreads), ChartTree(), 0, false};
   s.local_of[0].assign(size_t(unit_V.rows()), -1);
   for (std::vector<int>& faces : components) {
     s.tree.nodes.emplace_back();

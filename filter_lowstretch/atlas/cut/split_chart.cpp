@@ -9,6 +9,8 @@
 #include <queue>
 #include <unordered_map>
 
+#include "atlas/cut/cheapest_seam.h"
+
 namespace lowstretch {
 
 namespace {
@@ -133,6 +135,26 @@ int cheapest_cut(const FaceGraph& g, const std::vector<int>& rank, const std::ve
   return best;
 }
 
+// The sides of the level set below rank t, its faces within options.seam_band of it free to take
+// the side of the cheapest seam; the level set itself where that would leave a side under
+// options.smallest_part of the area.
+std::vector<char> side_of_cheapest_seam(const FaceGraph& g, const std::vector<double>& from_a, const std::vector<double>& from_b,
+                                        const std::vector<int>& by_rank, int t, const SplitOptions& options) {
+  const size_t n = from_a.size();
+  std::vector<char> level_set(n);
+  for (size_t r = 0; r < n; ++r) level_set[size_t(by_rank[r])] = int(r) < t;
+  if (!(options.seam_band > 0)) return level_set;
+  const auto key = [&](size_t i) { return from_a[i] - from_b[i]; };
+  const double level = 0.5 * (key(size_t(by_rank[size_t(t - 1)])) + key(size_t(by_rank[size_t(t)])));
+  const double band = options.seam_band * from_a[size_t(farthest(from_a))];
+  std::vector<signed char> fixed(n);
+  for (size_t i = 0; i < n; ++i) fixed[i] = key(i) < level - band ? 1 : key(i) > level + band ? 0 : -1;
+  std::vector<char> side = cheapest_seam(g.neighbour, g.cost, fixed);
+  double below = 0, total = 0;
+  for (size_t i = 0; i < n; ++i) below += side[i] ? g.area[i] : 0, total += g.area[i];
+  return std::min(below, total - below) >= options.smallest_part * total ? side : level_set;
+}
+
 }  // namespace
 
 std::vector<std::vector<int>> split_chart(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const std::vector<int>& twin,
@@ -153,8 +175,7 @@ std::vector<std::vector<int>> split_chart(const Eigen::MatrixXd& V, const Eigen:
   for (size_t r = 0; r < n; ++r) rank[size_t(by_rank[r])] = int(r);
   const int t = cheapest_cut(g, rank, by_rank, options.smallest_part);
   if (t < 0) return {faces};
-  std::vector<char> side(n);
-  for (size_t i = 0; i < n; ++i) side[i] = rank[i] < t;
+  std::vector<char> side = side_of_cheapest_seam(g, from_a, from_b, by_rank, t, options);
 
   // No sliver along the seam: a face with two or three neighbours across it changes side.
   for (int sweep = 0; sweep < 3; ++sweep)

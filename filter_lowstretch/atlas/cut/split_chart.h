@@ -2,6 +2,8 @@
 // (the two faces farthest apart, as Iso-charts seeds its splits), at the level set of the
 // difference of distances to them that gives the shortest seam for the area it separates: a neck
 // or a protrusion's base. Seams along creases count as shorter, so that they follow sharp edges.
+// The faces near that level set then take the side of the cheapest seam among them
+// (cheapest_seam.h): a level set of distances over faces zigzags, the cheapest seam does not.
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -12,6 +14,9 @@ namespace lowstretch {
 struct SplitOptions {
   double smallest_part = 0.05;  // neither side of the cut holds less of the chart's area
   double crease_discount = 0.5;  // a seam edge at a right-angle crease costs this much of its length
+  // Faces whose difference of distances is within this share of the chart's extent of the level
+  // set's may change side for a cheaper seam (0: the level set is the seam).
+  double seam_band = 0.3;
 };
 
 // faces: the chart's faces (indices into F), edge-connected; twin: opposite_half_edges(F).

@@ -62,6 +62,15 @@ Error start_search(AtlasSearch& s) {
   return {};
 }
 
+// Where charts are cut (split_chart.h): at the cheapest seam near the level set, or at the level
+// set itself between sharp edges and with fewer_seams, where on the bench table's meshes the
+// cheapest seams gave atlases that used the texture worse (CAD parts) or kept longer seams.
+SplitOptions split_options(const ChartOptions& options, bool between_sharp_edges) {
+  SplitOptions split;
+  if (between_sharp_edges || options.fewer_seams) split.seam_band = 0;
+  return split;
+}
+
 // Candidates: the charts between sharp edges (kTuning.faces_cuts), each with the charts that stretch
 // mapped free at kTuning.free_faces_must_pay. Gentler cuts only while the best atlas is poor.
 Error cut_along_sharp_edges(AtlasSearch& s) {
@@ -73,7 +82,7 @@ Error cut_along_sharp_edges(AtlasSearch& s) {
     std::vector<std::string> by_faces_notes;
     const Error e = split_until_bounded(
         s.unit_V, s.F, cut.degrees == kTuning.sharp_edge_degrees ? s.patches : patches_between_sharp_edges(s.unit_V, s.F, cut.degrees),
-        by_faces_options, by_faces_leaves, unused, by_faces_notes);
+        by_faces_options, by_faces_leaves, unused, by_faces_notes, split_options(s.options, true));
     if (e.code == ErrorCode::Cancelled) return e;
     if (e) continue;
     for (const double must_pay : kTuning.free_faces_must_pay) {
@@ -102,7 +111,8 @@ Error cut_along_sharp_edges(AtlasSearch& s) {
 Error cut_by_stretch(AtlasSearch& s) {
   std::vector<std::string> by_stretch_notes(s.notes.begin(), s.notes.begin() + long(s.common_notes));
   std::vector<SolvedChart> leaves, uncut;
-  if (Error e = split_until_bounded(s.unit_V, s.F, std::move(s.components), s.reporting, leaves, uncut, by_stretch_notes))
+  if (Error e = split_until_bounded(s.unit_V, s.F, std::move(s.components), s.reporting, leaves, uncut, by_stretch_notes,
+                                    split_options(s.options, false)))
     return e;
   std::vector<SolvedChart> unfreed = leaves;  // merging starts from them
   free_the_charts_that_stretch(leaves, s.options);
