@@ -138,15 +138,17 @@ int cheapest_cut(const FaceGraph& g, const std::vector<int>& rank, const std::ve
 // The sides of the level set below rank t, its faces within options.seam_band of it free to take
 // the side of the cheapest seam; the level set itself where that would leave a side under
 // options.smallest_part of the area.
+// extent: the distance between the two faces farthest apart.
 std::vector<char> side_of_cheapest_seam(const FaceGraph& g, const std::vector<double>& from_a, const std::vector<double>& from_b,
-                                        const std::vector<int>& by_rank, int t, const SplitOptions& options) {
+                                        double extent, const std::vector<int>& rank, const std::vector<int>& by_rank, int t,
+                                        const SplitOptions& options) {
   const size_t n = from_a.size();
   std::vector<char> level_set(n);
-  for (size_t r = 0; r < n; ++r) level_set[size_t(by_rank[r])] = int(r) < t;
+  for (size_t i = 0; i < n; ++i) level_set[i] = rank[i] < t;
   if (!(options.seam_band > 0)) return level_set;
   const auto key = [&](size_t i) { return from_a[i] - from_b[i]; };
   const double level = 0.5 * (key(size_t(by_rank[size_t(t - 1)])) + key(size_t(by_rank[size_t(t)])));
-  const double band = options.seam_band * from_a[size_t(farthest(from_a))];
+  const double band = options.seam_band * extent;
   std::vector<signed char> fixed(n);
   for (size_t i = 0; i < n; ++i) fixed[i] = key(i) < level - band ? 1 : key(i) > level + band ? 0 : -1;
   std::vector<char> side = cheapest_seam(g.neighbour, g.cost, fixed);
@@ -166,7 +168,8 @@ std::vector<std::vector<int>> split_chart(const Eigen::MatrixXd& V, const Eigen:
   // Across the longest extent: the face farthest from the first, and the one farthest from it.
   const int a = farthest(distances_from(g, 0));
   const std::vector<double> from_a = distances_from(g, a);
-  const std::vector<double> from_b = distances_from(g, farthest(from_a));
+  const int b = farthest(from_a);
+  const std::vector<double> from_b = distances_from(g, b);
   std::vector<int> by_rank(n);
   std::iota(by_rank.begin(), by_rank.end(), 0);
   std::stable_sort(by_rank.begin(), by_rank.end(),
@@ -175,7 +178,7 @@ std::vector<std::vector<int>> split_chart(const Eigen::MatrixXd& V, const Eigen:
   for (size_t r = 0; r < n; ++r) rank[size_t(by_rank[r])] = int(r);
   const int t = cheapest_cut(g, rank, by_rank, options.smallest_part);
   if (t < 0) return {faces};
-  std::vector<char> side = side_of_cheapest_seam(g, from_a, from_b, by_rank, t, options);
+  std::vector<char> side = side_of_cheapest_seam(g, from_a, from_b, from_a[size_t(b)], rank, by_rank, t, options);
 
   // No sliver along the seam: a face with two or three neighbours across it changes side.
   for (int sweep = 0; sweep < 3; ++sweep)
