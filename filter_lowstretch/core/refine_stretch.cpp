@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/metis_lock.h"
+#include "core/one_openmp_thread.h"
 #include "core/stretch.h"
 #include "core/stretch_hessian.h"
 
@@ -242,6 +243,7 @@ Eigen::MatrixXd refine_stretch(const DiskMesh& disk, const Eigen::MatrixXd& uv0,
     if (options.free_boundary || !disk.is_boundary[size_t(i)]) unknown[size_t(i)] = count++;
   if (count == 0) return uv;
   HessianLayout layout = hessian_layout(disk, unknown, count);
+  const OneOpenMpThread alone;
   Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>> newton;  // SuiteSparse's CHOLMOD
   newton.cholmod().nmethods = 1;
   if (2 * count < kLeastSupernodalUnknowns) {
