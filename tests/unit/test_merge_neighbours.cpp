@@ -81,6 +81,7 @@ TEST(MergeNeighbours, EveryMergeJoinsTwoChartsShorteningTheSeamsAndItsGrowthIsTh
     ASSERT_EQ(none.size(), charts.size());
     const double before = total_cost(none);
     double seam = seam_between(m, twin, chart_of_faces(none, m.F.rows()));
+    EXPECT_NEAR(merging.seam_between_after(0), seam, 1e-9 * seam);  // summed as merged, against edge by edge
     for (size_t k = 1; k <= merging.merges(); ++k, ++merges) {
       const std::vector<SolvedChart> after = merging.charts_after(k);
       const std::vector<int> chart = chart_of_faces(after, m.F.rows());
@@ -88,6 +89,7 @@ TEST(MergeNeighbours, EveryMergeJoinsTwoChartsShorteningTheSeamsAndItsGrowthIsTh
       EXPECT_EQ(after.size(), charts.size() - k);
       const double shorter = seam_between(m, twin, chart);
       EXPECT_LT(shorter, seam);
+      EXPECT_NEAR(merging.seam_between_after(k), shorter, 1e-9 * seam);
       EXPECT_NEAR(merging.growth(k), total_cost(after) / before, 1e-9);
       for (const SolvedChart& c : after) EXPECT_EQ(c.kept.flipped + c.kept.degenerate, 0);
       seam = shorter;

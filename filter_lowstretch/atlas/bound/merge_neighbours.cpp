@@ -47,6 +47,7 @@ NeighbourMerging::NeighbourMerging(std::vector<SolvedChart> charts, const Eigen:
     const double length = (unit_V.row(F(f, k)) - unit_V.row(F(f, (k + 1) % 3))).norm();
     seam_with_[size_t(p)][q] += length;
     seam_with_[size_t(q)][p] += length;
+    seam_before_ += length;
   }
   // Unmapped candidates wait with an estimate: the smaller chart's cost per seam with the other
   // (a small chart with a long seam goes first, as in UVAtlas and xatlas).
@@ -94,6 +95,7 @@ void NeighbourMerging::join(Candidate& c) {
   pieces_.push_back(std::move(c.joined));
   merged_.emplace_back(c.a, c.b);
   growth_.push_back(cost_ / before_);
+  seam_removed_.push_back((seam_removed_.empty() ? 0 : seam_removed_.back()) + c.seam);
   std::map<int, double> seams;
   for (const int side : {c.a, c.b})
     for (const auto& n : seam_with_[size_t(side)]) {

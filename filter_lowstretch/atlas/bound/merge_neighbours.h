@@ -26,6 +26,9 @@ class NeighbourMerging {
   size_t merges() const { return merged_.size(); }
   // The charts' texture cost after the first `merges` merges over their cost before any.
   double growth(size_t merges) const { return merges == 0 ? 1 : growth_[merges - 1]; }
+  // The seam between the charts after the first `merges` merges, in unit-box lengths: a lower bound
+  // of the atlas's seam then (a union cut open to a disk adds seam inside it).
+  double seam_between_after(size_t merges) const { return seam_before_ - (merges == 0 ? 0 : seam_removed_[merges - 1]); }
   // The charts after the first `merges` merges, in the order of the pieces.
   std::vector<SolvedChart> charts_after(size_t merges) const;
 
@@ -50,13 +53,14 @@ class NeighbourMerging {
   size_t charts_ = 0;
   std::vector<std::pair<int, int>> merged_;  // merge k joined these two into piece charts_ + k
   std::vector<double> growth_;
+  std::vector<double> seam_removed_;  // by the first k + 1 merges
   std::vector<std::vector<int>> sorted_faces_;
   std::vector<char> alive_;
   std::vector<std::map<int, double>> seam_with_;  // per piece: its neighbours and the seam with each
   std::vector<Candidate> candidates_;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue_;
   std::vector<std::vector<int>> local_of_;  // make_chart_mesh's scratch, per worker
-  double before_ = 0, cost_ = 0;
+  double before_ = 0, cost_ = 0, seam_before_ = 0;
   size_t faces_ = 0, mapped_faces_ = 0;  // of the charts; of the unions mapped so far
   double most_mapped_faces_ = 0;         // merging stops there (kTuning.merge_work)
 };

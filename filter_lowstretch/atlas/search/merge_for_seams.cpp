@@ -121,6 +121,12 @@ struct MergeSteps {
     }
     return true;
   }
+
+  // Whether the first `merges` merges leave seams no shorter than the best atlas's: such a step
+  // cannot replace it, so it needs no layout.
+  bool cannot_shorten(size_t merges) const {
+    return judge.unit * merging.seam_between_after(merges) >= judge.result.seam_length;
+  }
 };
 
 // Rectangle unions, further and further (kTuning.merge_growths, past kTuning.merge_misses steps
@@ -149,15 +155,18 @@ void merge_along_growths(MergeSteps& steps) {
 }
 
 // Free unions: a free union can cost less than its two pieces, so growth does not order the
-// steps; every merge within the largest growth is made, then their count is bisected.
+// steps; every merge within the largest growth is made, then their count is bisected, above the
+// steps that cannot shorten the best atlas's seams (those the rectangle unions left).
 void merge_by_count(MergeSteps& steps) {
   NeighbourMerging& merging = steps.merging;
   merging.merge_within(1 + *(std::end(kTuning.merge_growths) - 1));
-  size_t good = 0, bad = merging.merges() + 1;
-  if (merging.merges() == 0 || steps.keep_least(merging.merges())) return;
+  const size_t all = merging.merges();
+  if (all == 0 || steps.cannot_shorten(all) || steps.keep_least(all)) return;
+  size_t good = 0, bad = all;
+  while (good + 1 < bad && steps.cannot_shorten(good + 1)) ++good;
   for (int step = 0; step < kTuning.merge_count_bisections && bad > good + 1; ++step) {
     const size_t middle = (good + bad) / 2;
-    if (steps.keep_least(middle)) good = middle;
+    if (steps.cannot_shorten(middle) || steps.keep_least(middle)) good = middle;
     else bad = middle;
   }
 }
