@@ -1,5 +1,5 @@
 // CHOLMOD's factorizations start OpenMP teams of four threads (a fixed num_threads, which
-// OMP_NUM_THREADS does not lower) for loops of a few thousand entries, from every thread that
+// OMP_NUM_THREADS does not lower) for loops over a factor's columns, from every thread that
 // calls them: charts factored on all threads at once leave more threads than cores, and each team
 // spins while it waits. While one of these lives, the OpenMP regions its thread starts run on that
 // thread alone (libgomp keeps the limit per thread: other threads are not touched).
