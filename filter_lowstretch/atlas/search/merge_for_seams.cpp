@@ -106,18 +106,18 @@ struct MergeSteps {
   double least;
   bool by_outline;
   KeptStep& kept;
-  bool laid_out_again;  // the kept step's charts are kept, to lay them out again
+  bool keeps_charts;  // the kept step's charts are kept, to lay them out again or merge them further
   MapsByFaces mapped;
 
   // Whether the first `merges` merges keep the least efficiency.
   bool keep_least(size_t merges) {
     std::vector<SolvedChart> charts = merging.charts_after(merges);
     bool filled = false;
-    LaidOutCharts merged = lay_out_step(judge, laid_out_again ? charts : std::move(charts), by_outline, least, mapped, filled);
+    LaidOutCharts merged = lay_out_step(judge, keeps_charts ? charts : std::move(charts), by_outline, least, mapped, filled);
     if (merged.atlas.error || !(texture_efficiency(merged.atlas) >= least)) return false;
     if (merged.atlas.seam_length < judge.result.seam_length) {
       judge.keep(std::move(merged));
-      kept = {true, by_outline, filled, laid_out_again ? std::move(charts) : std::vector<SolvedChart>()};
+      kept = {true, by_outline, filled, keeps_charts ? std::move(charts) : std::vector<SolvedChart>()};
     }
     return true;
   }
@@ -199,13 +199,16 @@ bool merge_for_shorter_seams(AtlasSearch& s) {
   std::unique_ptr<AtlasSearch> apart;
   if (judged_apart) apart = search_like(s, judging);
   AtlasSearch& judge = judged_apart ? *apart : s;
+  // A least efficiency of the user's own is a trade-off chosen as fewer_seams is.
+  const bool free_unions_too = (s.options.fewer_seams || users_least) && s.F.rows() <= kTuning.most_free_union_faces;
   KeptStep kept;
   for (const bool free_unions : {false, true}) {
-    // A least efficiency of the user's own is a trade-off chosen as fewer_seams is.
-    if (free_unions && ((!s.options.fewer_seams && !users_least) || s.F.rows() > kTuning.most_free_union_faces))
-      continue;
-    NeighbourMerging merging(s.cut, s.unit_V, s.F, twin, s.options, free_unions);
-    MergeSteps steps{judge, merging, least, free_unions || users_least, kept, judged_apart, {}};
+    if (free_unions && !free_unions_too) continue;
+    // Free unions merge on from the rectangle unions' kept step: the merges it made are not mapped
+    // and laid out again.
+    const std::vector<SolvedChart>& start = free_unions && kept.any ? kept.charts : s.cut;
+    NeighbourMerging merging(start, s.unit_V, s.F, twin, s.options, free_unions);
+    MergeSteps steps{judge, merging, least, free_unions || users_least, kept, judged_apart || (free_unions_too && !free_unions), {}};
     if (free_unions) merge_by_count(steps);
     else merge_along_growths(steps);
   }
