@@ -10,6 +10,7 @@
 #include "core/disk_mesh.h"
 #include "core/laplacian_solver.h"
 #include "core/natural_boundary.h"
+#include "core/prepared_disk.h"
 #include "core/refine_stretch.h"
 #include "core/ring_weights.h"
 #include "core/stretch.h"
@@ -162,10 +163,18 @@ Result failed(Error error) {
   return result;
 }
 
-// The initial weights (ring_weights.h), with a note where a degenerate one-ring got uniform ones.
-std::vector<double> noted_initial_weights(const DiskMesh& disk, InitialWeights kind, std::vector<std::string>& notes) {
+// The initial weights (ring_weights.h), prepared or computed here, with a note where a degenerate
+// one-ring got uniform ones.
+std::vector<double> noted_initial_weights(const DiskMesh& disk, const PreparedDisk* prepared, InitialWeights kind,
+                                          std::vector<std::string>& notes) {
   int fallbacks = 0;
-  std::vector<double> weights = initial_weights(disk, kind, fallbacks);
+  std::vector<double> weights;
+  if (prepared && prepared->kind == kind) {
+    weights = prepared->weights;
+    fallbacks = prepared->uniform_fallbacks;
+  } else {
+    weights = initial_weights(disk, kind, fallbacks);
+  }
   if (fallbacks > 0)
     notes.push_back(std::to_string(fallbacks) +
                     " interior vertices have a degenerate one-ring (zero-length edges or zero-area "
@@ -173,19 +182,8 @@ std::vector<double> noted_initial_weights(const DiskMesh& disk, InitialWeights k
   return weights;
 }
 
-}  // namespace
-
-Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Options& options) {
-  const Clock::time_point start = Clock::now();
-  if (Error e = check_options(options)) return failed(e);
-  DiskMesh disk;
-  if (Error e = make_disk_mesh(V, F, disk)) return failed(e);
-  Result result = parameterize(disk, V.rows(), options);
-  result.seconds_total = seconds_since(start);
-  return result;
-}
-
-Result parameterize(const DiskMesh& disk, Eigen::Index vertex_rows, const Options& options) {
+// The method on a disk, with its initial weights as prepared where they are (may be null).
+Result parameterize_disk(const DiskMesh& disk, const PreparedDisk* prepared, Eigen::Index vertex_rows, const Options& options) {
   const Clock::time_point start = Clock::now();
   Result result;
   auto report = [&](double fraction, const char* stage) {
@@ -196,7 +194,7 @@ Result parameterize(const DiskMesh& disk, Eigen::Index vertex_rows, const Option
   Eigen::MatrixXd boundary_uv;
   if (Error e = boundary_positions(disk, options, vertex_rows, boundary_uv, result.notes)) return failed(e);
 
-  std::vector<double> weights = noted_initial_weights(disk, options.weights, result.notes);
+  std::vector<double> weights = noted_initial_weights(disk, prepared, options.weights, result.notes);
 
   LaplacianSolver solver(disk, options.solver);
   SurfaceReference reference;
@@ -241,6 +239,26 @@ Result parameterize(const DiskMesh& disk, Eigen::Index vertex_rows, const Option
   result.seconds_total = seconds_since(start);
   report(1.0, "done");
   return result;
+}
+
+}  // namespace
+
+Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Options& options) {
+  const Clock::time_point start = Clock::now();
+  if (Error e = check_options(options)) return failed(e);
+  DiskMesh disk;
+  if (Error e = make_disk_mesh(V, F, disk)) return failed(e);
+  Result result = parameterize(disk, V.rows(), options);
+  result.seconds_total = seconds_since(start);
+  return result;
+}
+
+Result parameterize(const DiskMesh& disk, Eigen::Index vertex_rows, const Options& options) {
+  return parameterize_disk(disk, nullptr, vertex_rows, options);
+}
+
+Result parameterize(const PreparedDisk& prepared, Eigen::Index vertex_rows, const Options& options) {
+  return parameterize_disk(prepared.disk, &prepared, vertex_rows, options);
 }
 
 }  // namespace lowstretch

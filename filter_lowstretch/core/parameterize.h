@@ -14,6 +14,7 @@
 namespace lowstretch {
 
 struct DiskMesh;
+struct PreparedDisk;
 
 constexpr int kMostPasses = 1000;
 constexpr int kMostRefineIterations = 10000;
@@ -69,5 +70,9 @@ Result parameterize(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Op
 // The same on a disk that make_disk_mesh built (from V with vertex_rows rows): for a caller that
 // needs the disk's boundary loop first, to give its positions.
 Result parameterize(const DiskMesh& disk, Eigen::Index vertex_rows, const Options& options);
+
+// The same with the disk's initial weights prepared once (prepared_disk.h); where options.weights
+// asks for another kind, that kind is computed.
+Result parameterize(const PreparedDisk& prepared, Eigen::Index vertex_rows, const Options& options);
 
 }  // namespace lowstretch

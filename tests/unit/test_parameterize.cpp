@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/parameterize.h"
+#include "core/prepared_disk.h"
 #include "core/stretch.h"
 #include "generated_meshes.h"
 
@@ -309,4 +310,30 @@ TEST(Parameterize, GivenBoundaryPositionsAreChecked) {
   EXPECT_EQ(infinite.error.code, ErrorCode::InvalidOption);
   EXPECT_NE(message(infinite.error).find("finite at every boundary vertex"), std::string::npos) << message(infinite.error);
   EXPECT_TRUE(infinite.uv.size() == 0);
+}
+
+// A disk prepared once (prepared_disk.h) maps exactly as the mesh itself, onto every boundary; a
+// prepared kind other than the options' is not used.
+TEST(Parameterize, PreparedDiskMapsAsTheMeshDoes) {
+  const testmesh::Mesh m = testmesh::grid(12, [](double x, double y) { return 0.3 * std::sin(3 * x) * std::cos(2 * y); });
+  PreparedDisk prepared;
+  ASSERT_FALSE(prepare_disk(m.V, m.F, InitialWeights::Floater, prepared));
+  for (const BoundaryShape shape : {BoundaryShape::Square, BoundaryShape::Circle, BoundaryShape::Natural}) {
+    for (const InitialWeights weights : {InitialWeights::Floater, InitialWeights::MeanValue}) {
+      Options o;
+      o.boundary = shape;
+      o.weights = weights;
+      const Result direct = parameterize(m.V, m.F, o);
+      const Result reused = parameterize(prepared, m.V.rows(), o);
+      ASSERT_FALSE(direct.error);
+      ASSERT_FALSE(reused.error);
+      EXPECT_EQ(reused.uv, direct.uv) << to_string(weights);
+      EXPECT_EQ(reused.chosen_pass, direct.chosen_pass);
+      EXPECT_GT(direct.passes.size(), 1u);
+    }
+  }
+  // The mean value weights differ from Floater's on this curved grid, so the check above could fail.
+  Options floater, mean_value;
+  mean_value.weights = InitialWeights::MeanValue;
+  EXPECT_NE(parameterize(prepared, m.V.rows(), floater).uv, parameterize(prepared, m.V.rows(), mean_value).uv);
 }

@@ -53,6 +53,7 @@ bool cutting_into_disks_fixes(ErrorCode code) {
 
 Error make_chart_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const std::vector<int>& faces,
                       std::vector<int>& local_of, ChartMesh& chart) {
+  chart.prepared.reset();
   std::vector<int> input_vertex;
   Eigen::MatrixXi local_F(Eigen::Index(faces.size()), 3);
   for (size_t j = 0; j < faces.size(); ++j)
@@ -101,6 +102,8 @@ Error make_chart_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
   chart.V.resize(Eigen::Index(cut.original_vertex.size()), 3);
   for (size_t i = 0; i < cut.original_vertex.size(); ++i) chart.V.row(Eigen::Index(i)) = local_V.row(cut.original_vertex[i]);
   chart.input_face = faces;
+  auto prepared = std::make_shared<PreparedDisk>();
+  if (!prepare_disk(chart.V, chart.F, InitialWeights::Floater, *prepared)) chart.prepared = std::move(prepared);
   return {};
 }
 
@@ -130,8 +133,10 @@ namespace {
 // boundary. The rectangle's notes come first, where the core's square puts its own.
 Result map_chart(const ChartMesh& mesh, Options options, double aspect, bool free_boundary) {
   Result map;
-  DiskMesh disk;
-  if ((map.error = make_disk_mesh(mesh.V, mesh.F, disk))) return map;
+  PreparedDisk own;
+  if (!mesh.prepared && (map.error = prepare_disk(mesh.V, mesh.F, options.weights, own))) return map;
+  const PreparedDisk& prepared = mesh.prepared ? *mesh.prepared : own;
+  const DiskMesh& disk = prepared.disk;
   std::vector<std::string> notes;
   if (free_boundary) {
     options.boundary = BoundaryShape::Natural;
@@ -142,7 +147,7 @@ Result map_chart(const ChartMesh& mesh, Options options, double aspect, bool fre
     for (size_t i = 0; i < disk.boundary.size(); ++i)
       options.given_boundary.row(disk.input_vertex[size_t(disk.boundary[i])]) = loop_uv.row(Eigen::Index(i));
   }
-  map = parameterize(disk, mesh.V.rows(), options);
+  map = parameterize(prepared, mesh.V.rows(), options);
   if (!map.error) map.notes.insert(map.notes.begin(), notes.begin(), notes.end());
   return map;
 }

@@ -6,10 +6,12 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "atlas/base/atlas_types.h"
 #include "core/parameterize.h"
+#include "core/prepared_disk.h"
 
 namespace lowstretch {
 
@@ -25,6 +27,9 @@ struct ChartMesh {
   std::vector<int> input_face;  // real face -> input face
   int closed_holes = 0;
   double seam_length = 0;       // in unit-box lengths
+  // V and F as the core's disk with Floater's weights, made with them: a chart is mapped onto
+  // many rectangles, and copies of it share this.
+  std::shared_ptr<const PreparedDisk> prepared;
 };
 
 // local_of: -1 for every vertex, and left so (one array for all components keeps many small
