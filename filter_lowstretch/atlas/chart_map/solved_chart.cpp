@@ -102,8 +102,7 @@ Error make_chart_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
   chart.V.resize(Eigen::Index(cut.original_vertex.size()), 3);
   for (size_t i = 0; i < cut.original_vertex.size(); ++i) chart.V.row(Eigen::Index(i)) = local_V.row(cut.original_vertex[i]);
   chart.input_face = faces;
-  auto prepared = std::make_shared<PreparedDisk>();
-  if (!prepare_disk(chart.V, chart.F, InitialWeights::Floater, *prepared)) chart.prepared = std::move(prepared);
+  chart.prepared = std::make_shared<LazyPreparedDisk>();
   return {};
 }
 
@@ -134,8 +133,9 @@ namespace {
 Result map_chart(const ChartMesh& mesh, Options options, double aspect, bool free_boundary) {
   Result map;
   PreparedDisk own;
-  if (!mesh.prepared && (map.error = prepare_disk(mesh.V, mesh.F, options.weights, own))) return map;
-  const PreparedDisk& prepared = mesh.prepared ? *mesh.prepared : own;
+  const PreparedDisk& prepared = mesh.prepared ? mesh.prepared->get(mesh.V, mesh.F, options.weights, map.error) : own;
+  if (!mesh.prepared) map.error = prepare_disk(mesh.V, mesh.F, options.weights, own);
+  if (map.error) return map;
   const DiskMesh& disk = prepared.disk;
   std::vector<std::string> notes;
   if (free_boundary) {

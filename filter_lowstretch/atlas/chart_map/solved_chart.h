@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include "atlas/base/atlas_types.h"
@@ -19,6 +20,21 @@ namespace lowstretch {
 // copy (split_vertex_fans.h) solves non-manifold and misoriented ones before.
 bool cutting_into_disks_fixes(ErrorCode code);
 
+// prepare_disk of a chart's mesh, made once by its first caller, from any thread.
+class LazyPreparedDisk {
+ public:
+  const PreparedDisk& get(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, InitialWeights kind, Error& error) {
+    std::call_once(once_, [&] { error_ = prepare_disk(V, F, kind, prepared_); });
+    error = error_;
+    return prepared_;
+  }
+
+ private:
+  std::once_flag once_;
+  PreparedDisk prepared_;
+  Error error_;
+};
+
 // One component made into a disk: its faces first (in input order), then the virtual faces
 // that close its holes.
 struct ChartMesh {
@@ -27,9 +43,10 @@ struct ChartMesh {
   std::vector<int> input_face;  // real face -> input face
   int closed_holes = 0;
   double seam_length = 0;       // in unit-box lengths
-  // V and F as the core's disk with Floater's weights, made with them: a chart is mapped onto
-  // many rectangles, and copies of it share this.
-  std::shared_ptr<const PreparedDisk> prepared;
+  // V and F as the core's disk with its initial weights, made when the chart is first mapped: a
+  // chart is mapped onto many rectangles, and copies of it share this; a large chart cut again
+  // before it is mapped never needs it.
+  std::shared_ptr<LazyPreparedDisk> prepared;
 };
 
 // local_of: -1 for every vertex, and left so (one array for all components keeps many small
