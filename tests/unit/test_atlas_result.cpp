@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -222,6 +223,15 @@ TEST(AtlasResult, StoreCountsTheTrianglesFloatRoundingCollapses) {
     EXPECT_EQ(r.subtexel_triangles, collapses ? 2 : 0) << apart;
     EXPECT_EQ(r.notes.size(), collapses ? 1u : 0u) << apart;
     for (const int f : {1, 3}) EXPECT_EQ(std::isinf(r.face_stretch(f)), collapses) << apart << " face " << f;
+    // The identity map elsewhere: the search's efficiency is the coverage, over the faces rounding
+    // did not collapse (they become charts of their own as stored), however few they are.
+    EXPECT_NEAR(r.l2_of_valid, 1, 1e-6) << apart;
+    EXPECT_NEAR(texture_efficiency(r), r.coverage, 1e-6) << apart;
+    EXPECT_GT(r.coverage, 0.99) << apart;
+    // A fold that rounding does not explain leaves the layout's own infinite stretch.
+    r.layout.flipped += 1;
+    r.layout.l2_stretch = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(texture_efficiency(r), 0) << apart;
   }
 }
 

@@ -14,7 +14,10 @@ const char* to_string(NonDisk non_disk) {
 }
 
 double texture_efficiency(const ChartsResult& r) {
-  return r.error ? -1 : r.coverage / (r.layout.l2_stretch * r.layout.l2_stretch);
+  if (r.error) return -1;
+  const int invalid = r.layout.flipped + r.layout.degenerate;
+  const double l2 = invalid > 0 && invalid <= r.float_collapsed ? r.l2_of_valid : r.layout.l2_stretch;
+  return r.coverage / (l2 * l2);
 }
 
 double largest_chart_stretch(const ChartsResult& r) {

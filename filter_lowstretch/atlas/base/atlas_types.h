@@ -82,6 +82,7 @@ struct ChartsResult {
                                           // number and timings, measured after rounding)
   int subtexel_triangles = 0;             // UV triangles smaller than one texel of a 4096^2 texture
   int float_collapsed = 0;                // of them, positive in double, flipped or zero in float
+  double l2_of_valid = 0;                 // the layout's L2 stretch over the faces neither flipped nor zero-area
   std::vector<LayoutPass> passes;         // L2 stretch and flips of every pass, whole mesh
   double seam_length = 0;                 // sum over the charts
   double coverage = 0;                    // fraction of [0,1]^2 covered by the UV triangles
@@ -106,7 +107,9 @@ struct ChartsResult {
 const char* to_string(NonDisk non_disk);
 
 // Texture efficiency (Sander et al. 2001): coverage / L2^2, the share of the texture used per unit
-// of stretch; -1 for a failed result.
+// of stretch; -1 for a failed result. Where float rounding alone folds or collapses triangles, L2
+// is taken over the others: the last step (valid_as_stored.h) makes each such triangle a chart of
+// its own, and on a large scan a few of them would make every candidate's efficiency 0.
 double texture_efficiency(const ChartsResult& result);
 // The highest L2 stretch of any one chart (0 for a failed result).
 double largest_chart_stretch(const ChartsResult& result);

@@ -72,6 +72,7 @@ void measure_layout(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& F, int
   const FaceStretch s = face_stretch(corner_V, corner_F, corner_uv);
   result.layout = measure(corner_V, corner_F, corner_edges, corner_uv, s);
   result.coverage = s.area_uv.cwiseAbs().sum();
+  result.l2_of_valid = l2_stretch(s, true);
   result.face_stretch.resize(F.rows());
   for (Eigen::Index f = 0; f < F.rows(); ++f) result.face_stretch(f) = s.valid(f) ? s.normalization * s.sigma(f) : kInf;
   result.vertex_stretch = vertex_stretch(F, vertex_rows, s);
