@@ -214,10 +214,17 @@ bool merge_for_shorter_seams(AtlasSearch& s) {
   }
   if (!kept.any) return false;
   if (judged_apart) {
+    // Refined further, the step's charts can pack a little worse by outline and fall below the
+    // least efficiency: then the step as judged is kept, which keeps it.
     MapsByFaces mapped;
+    const bool judged_filled = kept.filled;
     LaidOutCharts laid_out = lay_out_step(s, std::move(kept.charts), kept.by_outline, least, mapped, kept.filled);
-    if (laid_out.atlas.error || !(texture_efficiency(laid_out.atlas) >= least)) return false;
-    s.keep(std::move(laid_out));
+    if (!laid_out.atlas.error && texture_efficiency(laid_out.atlas) >= least) {
+      s.keep(std::move(laid_out));
+    } else {
+      s.keep({std::move(judge.result), std::move(judge.kept)});
+      kept.filled = judged_filled;
+    }
   }
   if (!kept.by_outline && !kept.filled) fill_empty_texels(s, s.kept, s.result);
   if (s.result.charts.size() >= unmerged.charts.size()) return false;
