@@ -217,13 +217,13 @@ bool merge_for_shorter_seams(AtlasSearch& s) {
     // Refined further, the step's charts can pack a little worse by outline and fall below the
     // least efficiency: then the step as judged is kept, which keeps it.
     MapsByFaces mapped;
-    const bool judged_filled = kept.filled;
-    LaidOutCharts laid_out = lay_out_step(s, std::move(kept.charts), kept.by_outline, least, mapped, kept.filled);
+    bool filled = false;
+    LaidOutCharts laid_out = lay_out_step(s, std::move(kept.charts), kept.by_outline, least, mapped, filled);
     if (!laid_out.atlas.error && texture_efficiency(laid_out.atlas) >= least) {
       s.keep(std::move(laid_out));
+      kept.filled = filled;
     } else {
       s.keep({std::move(judge.result), std::move(judge.kept)});
-      kept.filled = judged_filled;
     }
   }
   if (!kept.by_outline && !kept.filled) fill_empty_texels(s, s.kept, s.result);
