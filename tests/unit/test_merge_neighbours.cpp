@@ -249,3 +249,18 @@ TEST(MergeNeighbours, FreeUnionsAreKeptOnlyWhereTheyCostLessThanTheirRectangleAn
   }
   EXPECT_GT(free, 0) << "some unions are free";
 }
+
+TEST(MergeNeighbours, UnionsAreSolvedByTheLuAsTheCutsChartsAre) {
+  // Unions above the core's multigrid bound (3000 unknowns) and below the charts' (30000).
+  const testmesh::Mesh m = testmesh::hemisphere(60, 120);
+  const std::vector<int> twin = opposite_half_edges(m.F);
+  NeighbourMerging merging(cut_charts(m, 1.05), m.V, m.F, twin, ChartOptions());
+  merging.merge_within(100);
+  size_t largest = 0;
+  for (const SolvedChart& c : merging.charts_after(merging.merges())) {
+    largest = std::max(largest, size_t(c.mesh.V.rows()));
+    for (const PassMetrics& pass : c.map.passes) EXPECT_EQ(pass.solver, LinearSolver::Direct) << c.mesh.V.rows() << " vertices";
+  }
+  EXPECT_GT(largest, size_t(SolverOptions().amg_minimum_rows));
+  EXPECT_LT(largest, size_t(kTuning.chart_amg_minimum_rows));
+}

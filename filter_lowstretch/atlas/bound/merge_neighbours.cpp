@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include "atlas/base/tuning.h"
 #include "atlas/bound/deciding_map.h"
@@ -59,7 +60,7 @@ NeighbourMerging::NeighbourMerging(std::vector<SolvedChart> charts, const Eigen:
       }
 }
 
-void NeighbourMerging::map(Candidate& c, std::vector<int>& local_of) {
+void NeighbourMerging::map(Candidate& c, const Options& options, std::vector<int>& local_of) {
   const std::vector<int>& fa = sorted_faces_[size_t(c.a)];
   const std::vector<int>& fb = sorted_faces_[size_t(c.b)];
   c.joined.faces.resize(fa.size() + fb.size());
@@ -67,12 +68,12 @@ void NeighbourMerging::map(Candidate& c, std::vector<int>& local_of) {
   c.mapped = true;
   if (local_of.empty()) local_of.assign(size_t(unit_V_.rows()), -1);
   if (make_chart_mesh(unit_V_, F_, c.joined.faces, local_of, c.joined.mesh)) return;
-  solve_chart(c.joined, deciding_, 0);  // onto its own rectangle: a square rarely pays for a second solve
+  solve_chart(c.joined, options, 0);  // onto its own rectangle: a square rarely pays for a second solve
   c.joined.deciding_map = true;
   c.valid = has_valid_map(c.joined);
   if (!free_unions_) return;
   SolvedChart free = unmapped_copy(c.joined);
-  solve_onto(free, deciding_, 0, true);
+  solve_onto(free, options, 0, true);
   free.deciding_map = true;
   if (!has_valid_map(free) || (c.valid && !(texture_cost(free) < texture_cost(c.joined)))) return;
   if (crosses_itself(free)) return;
@@ -131,7 +132,15 @@ void NeighbourMerging::merge_within(double growth) {
         if (!next.mapped && alive_[size_t(next.a)] && alive_[size_t(next.b)]) batch.push_back(queue_.top().second);
         queue_.pop();
       }
-      for_each_index(int(batch.size()), [&](int j, int worker) { map(candidates_[batch[size_t(j)]], local_of_[size_t(worker)]); });
+      // Each union solved as the cut's charts are (by the LU below kTuning.chart_amg_minimum_rows),
+      // on one thread unless it is most of the batch.
+      std::vector<size_t> union_faces;
+      for (const size_t j : batch)
+        union_faces.push_back(sorted_faces_[size_t(candidates_[j].a)].size() + sorted_faces_[size_t(candidates_[j].b)].size());
+      const size_t batch_faces = std::accumulate(union_faces.begin(), union_faces.end(), size_t(0));
+      for_each_index(int(batch.size()), [&](int j, int worker) {
+        map(candidates_[batch[size_t(j)]], for_share(deciding_, union_faces[size_t(j)], batch_faces), local_of_[size_t(worker)]);
+      });
       for (const size_t j : batch) mapped_faces_ += candidates_[j].joined.faces.size();  // here, not on the workers
       for (const size_t j : batch)
         if (candidates_[j].valid) queue_.emplace(extra_cost(candidates_[j]) / candidates_[j].seam, j);

@@ -41,7 +41,7 @@ class NeighbourMerging {
     SolvedChart joined;
   };
   using Entry = std::pair<double, size_t>;  // cost per seam length (or its estimate), candidate
-  void map(Candidate& c, std::vector<int>& local_of);
+  void map(Candidate& c, const Options& options, std::vector<int>& local_of);
   double extra_cost(const Candidate& c) const;
   void join(Candidate& c);
 
