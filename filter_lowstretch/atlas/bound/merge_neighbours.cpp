@@ -132,8 +132,7 @@ void NeighbourMerging::merge_within(double growth) {
         if (!next.mapped && alive_[size_t(next.a)] && alive_[size_t(next.b)]) batch.push_back(queue_.top().second);
         queue_.pop();
       }
-      // Each union solved as the cut's charts are (by the LU below kTuning.chart_amg_minimum_rows),
-      // on one thread unless it is most of the batch.
+      // Each union on one thread unless it is most of the batch.
       std::vector<size_t> union_faces;
       for (const size_t j : batch)
         union_faces.push_back(sorted_faces_[size_t(candidates_[j].a)].size() + sorted_faces_[size_t(candidates_[j].b)].size());

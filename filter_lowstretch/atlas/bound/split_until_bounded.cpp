@@ -215,7 +215,7 @@ std::vector<int> cut_without_map(Splitting& s, size_t first, size_t end) {
 void map_if_left_whole(Splitting& s, const Options& deciding, SolvedChart& chart, const std::vector<int>& parts) {
   if (!parts.empty()) return;
   chart.cut_ahead = false;
-  map_to_decide(chart, for_share(deciding, chart.faces.size(), chart.faces.size()), s.options.max_stretch);
+  map_to_decide(chart, deciding, s.options.max_stretch);
 }
 
 // The pieces of the cuts into the tree, in order, within the chart limit.
@@ -317,7 +317,7 @@ Error split_until_bounded(const Eigen::MatrixXd& unit_V, const Eigen::MatrixXi& 
   }
   undo_cuts_that_did_not_pay(s.tree, options.max_stretch, [&](SolvedChart& chart) {
     if (make_chart_mesh(unit_V, F, chart.faces, s.local_of[0], chart.mesh)) return false;
-    map_to_decide(chart, for_share(deciding, chart.faces.size(), chart.faces.size()), options.max_stretch);
+    map_to_decide(chart, deciding, options.max_stretch);
     return !chart.map.error;
   });
   collect_charts(s.tree, components.size(), leaves, uncut);

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 
-#include "atlas/base/tuning.h"
-
 namespace lowstretch {
 
 std::vector<int> largest_first(const std::vector<SolvedChart>& charts, size_t first, size_t end) {
@@ -17,7 +15,6 @@ std::vector<int> largest_first(const std::vector<SolvedChart>& charts, size_t fi
 
 Options for_share(Options options, size_t faces, size_t all_faces) {
   options.solver.threads = double(faces) * loop_threads() > double(all_faces) ? 2 : 1;
-  options.solver.amg_minimum_rows = std::max(options.solver.amg_minimum_rows, kTuning.chart_amg_minimum_rows);
   return options;
 }
 

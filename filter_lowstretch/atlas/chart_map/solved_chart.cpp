@@ -156,6 +156,7 @@ Result map_chart(const ChartMesh& mesh, Options options, double aspect, bool fre
 
 void solve_onto(SolvedChart& chart, Options options, double aspect, bool free_boundary) {
   options.progress = nullptr;  // called from worker threads: the caller reports between rounds
+  options.solver.amg_minimum_rows = std::max(options.solver.amg_minimum_rows, kTuning.chart_amg_minimum_rows);
   chart.free_boundary = free_boundary;
   chart.deciding_map = false;
   chart.passes.clear();

@@ -101,7 +101,8 @@ bool needs_split(const ChartPass& p, double max_stretch);
 bool bound_cuts(const SolvedChart& chart, double max_stretch);
 
 // The method on a chart whose mesh is built, onto a rectangle of `aspect` (0: its own), or with
-// the natural boundary if `free_boundary`.
+// the natural boundary if `free_boundary`; the multigrid solves only charts of at least
+// kTuning.chart_amg_minimum_rows unknowns, the sparse LU the others.
 void solve_onto(SolvedChart& chart, Options options, double aspect, bool free_boundary = false);
 
 // The method on a chart whose mesh is built, onto a rectangle of `aspect`; aspect 0: onto the
