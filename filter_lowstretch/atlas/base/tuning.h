@@ -142,10 +142,6 @@ struct AtlasTuning {
   // at most most_packing_halvings times from where the charts would cover the whole texture.
   int packing_bisections = 6;
   int most_packing_halvings = 12;
-  // A packing by outline that must reach an efficiency is first tried at the density that would,
-  // at this share of it (the charts' mean L2^2 as mapped is not quite the layout's): where they do
-  // not fit there, the search is not made.
-  double least_density_share = 0.97;
 
   // --- Merging charts for shorter seams (bound/merge_neighbours, search/merge_for_seams) ---
   // How far the charts' texture cost grows, step by step, as they are merged: each step is laid out

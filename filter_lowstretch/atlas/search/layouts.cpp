@@ -79,11 +79,14 @@ ChartsResult packed_whole(const AtlasSearch& s, std::vector<SolvedChart> charts)
   return atlas_of(std::move(charts), std::move(all), s.unit_V, s.F, s.unit, int(s.V.rows()), s.options);
 }
 
+// The coverage at which charts of their L2 stretch as mapped reach `efficiency`.
+double coverage_for(const std::vector<SolvedChart>& charts, double efficiency) { return efficiency * mean_l2_squared(charts); }
+
 // packed_whole, made only where the charts fit at the density that reaches the least efficiency
-// with their L2 stretch as mapped (a little less: kTuning.least_density_share); a packing below
-// it is of no use to the caller, and the search for the densest layout takes many more tries.
+// with their L2 stretch as mapped (a layout measures the same stretch); a packing below it is of
+// no use to the caller, and the search for the densest layout takes many more tries.
 ChartsResult packed_whole_if_it_may_reach(const AtlasSearch& s, std::vector<SolvedChart> charts, double least_efficiency) {
-  const double coverage = kTuning.least_density_share * least_efficiency * mean_l2_squared(charts);
+  const double coverage = coverage_for(charts, least_efficiency);
   if (least_efficiency > 0 && !may_cover_by_outline(charts, s.options, coverage)) {
     ChartsResult below;
     below.error = {ErrorCode::ChartsNotPacked, static_cast<long long>(charts.size()), ""};
@@ -145,7 +148,7 @@ void pack_by_outline_if_better(const AtlasSearch& s, const std::vector<SolvedCha
   const double to_beat = packed.error ? texture_efficiency(laid_out) : std::max(texture_efficiency(packed), texture_efficiency(laid_out));
   // Boxes given up below the tiling reach less than the coverage their probe asked for.
   const double boxes_coverage =
-      packed.error ? kTuning.least_density_share * texture_efficiency(laid_out) * mean_l2_squared(freed) : packed.coverage;
+      packed.error ? coverage_for(freed, texture_efficiency(laid_out)) : packed.coverage;
   const double free_coverage = kTuning.most_free_outline_coverage * boxes_coverage;
   const auto free_may_win = [&](double l2_squared) { return free_coverage / l2_squared > to_beat; };
   if (free_may_win(least_l2_squared_if_freed(freed)) && free_where_it_stretches_less(freed, s.options) > 0 &&
