@@ -88,7 +88,8 @@ struct LaplacianSolver::Transfers {
 
 LaplacianSolver::~LaplacianSolver() = default;
 
-LaplacianSolver::LaplacianSolver(const DiskMesh& disk, const SolverOptions& options) : disk_(disk), options_(options) {
+LaplacianSolver::LaplacianSolver(const DiskMesh& disk, const SolverOptions& options, LuOrdering* ordering)
+    : disk_(disk), options_(options), small_lu_(ordering) {
   const int n = int(disk.V.rows());
   unknown_.assign(size_t(n), -1);
   int rows = 0;

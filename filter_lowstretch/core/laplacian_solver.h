@@ -38,7 +38,9 @@ struct SolveReport {
 
 class LaplacianSolver {
  public:
-  LaplacianSolver(const DiskMesh& disk, const SolverOptions& options);
+  // ordering: the LU's ordering of this disk's system, shared with other solvers of the same disk
+  // (prepared_disk.h), or null for one of its own.
+  LaplacianSolver(const DiskMesh& disk, const SolverOptions& options, LuOrdering* ordering = nullptr);
   ~LaplacianSolver();
 
   // weights: aligned with disk.ring; boundary_uv: rows follow disk.boundary. uv: on entry the

@@ -196,7 +196,7 @@ Result parameterize_disk(const DiskMesh& disk, const PreparedDisk* prepared, Eig
 
   std::vector<double> weights = noted_initial_weights(disk, prepared, options.weights, result.notes);
 
-  LaplacianSolver solver(disk, options.solver);
+  LaplacianSolver solver(disk, options.solver, prepared ? prepared->ordering.get() : nullptr);
   SurfaceReference reference;
   if (options.measure_distortions) reference = surface_reference(disk.V, disk.F, disk.edges);
   const int n = int(disk.V.rows());

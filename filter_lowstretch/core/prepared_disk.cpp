@@ -9,6 +9,7 @@ Error prepare_disk(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, InitialWe
   prepared.kind = kind;
   prepared.uniform_fallbacks = 0;
   prepared.weights = initial_weights(prepared.disk, kind, prepared.uniform_fallbacks);
+  prepared.ordering = std::make_shared<LuOrdering>();
   return {};
 }
 

@@ -6,12 +6,32 @@
 #include <Eigen/Core>
 #include <Eigen/Sparse>
 #include <memory>
+#include <mutex>
 
 namespace lowstretch {
 
+// KLU's ordering of one pattern (its symbolic analysis), found by the first factorization among
+// the SmallSystemLu that share it, from any thread. KLU's factorizations and solves only read it,
+// so the maps of one mesh (an atlas maps a chart onto many rectangles) order its system once.
+class LuOrdering {
+ public:
+  LuOrdering();
+  ~LuOrdering();
+  LuOrdering(const LuOrdering&) = delete;
+  LuOrdering& operator=(const LuOrdering&) = delete;
+
+ private:
+  friend class SmallSystemLu;
+  struct Analysis;  // klu_symbolic (klu.h stays out of this header)
+  std::once_flag once_;
+  std::unique_ptr<Analysis> analysis_;
+};
+
 class SmallSystemLu {
  public:
-  SmallSystemLu();
+  // With `shared`, the ordering is that one's (every matrix factored must have its pattern);
+  // without, one of its own.
+  explicit SmallSystemLu(LuOrdering* shared = nullptr);
   ~SmallSystemLu();
   SmallSystemLu(const SmallSystemLu&) = delete;
   SmallSystemLu& operator=(const SmallSystemLu&) = delete;
@@ -25,6 +45,8 @@ class SmallSystemLu {
  private:
   struct Klu;  // KLU's objects (klu.h stays out of this header)
   std::unique_ptr<Klu> klu_;
+  std::unique_ptr<LuOrdering> own_ordering_;
+  LuOrdering* ordering_;
 };
 
 }  // namespace lowstretch

@@ -312,8 +312,9 @@ TEST(Parameterize, GivenBoundaryPositionsAreChecked) {
   EXPECT_TRUE(infinite.uv.size() == 0);
 }
 
-// A disk prepared once (prepared_disk.h) maps exactly as the mesh itself, onto every boundary; a
-// prepared kind other than the options' is not used.
+// A disk prepared once (prepared_disk.h) maps exactly as the mesh itself, onto every boundary (its
+// maps share one LU ordering, the mesh's maps each have their own); a prepared kind other than the
+// options' is not used.
 TEST(Parameterize, PreparedDiskMapsAsTheMeshDoes) {
   const testmesh::Mesh m = testmesh::grid(12, [](double x, double y) { return 0.3 * std::sin(3 * x) * std::cos(2 * y); });
   PreparedDisk prepared;

@@ -1,9 +1,10 @@
 // KLU on a pass's system as the solver holds it (by rows): it solves A x = b, not its transpose,
-// keeps doing so when the values change, and says when A is singular.
+// keeps doing so when the values change, says when A is singular, and shares an ordering.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
+#include <thread>
 #include <vector>
 
 #include "core/small_system_lu.h"
@@ -72,4 +73,33 @@ TEST(SmallSystemLu, ASingularMatrixIsNotFactored) {
   EXPECT_FALSE(lu.factorize(A, true));
   Eigen::MatrixXd x;
   EXPECT_FALSE(lu.solve(right_sides(8), x));
+}
+
+TEST(SmallSystemLu, SolversSharingAnOrderingFromTwoThreadsSolveAsAloneAndRefuseAnotherPattern) {
+  const Eigen::MatrixXd b = right_sides(40);
+  Eigen::MatrixXd alone[2];
+  for (int k = 0; k < 2; ++k) {
+    SmallSystemLu lu;
+    RowMatrix A = lopsided(40, 0.3 + k);
+    ASSERT_TRUE(lu.factorize(A, false));
+    ASSERT_TRUE(lu.solve(b, alone[k]));
+  }
+  LuOrdering ordering;
+  Eigen::MatrixXd shared[2];
+  bool solved[2] = {false, false};
+  std::vector<std::thread> threads;
+  for (int k = 0; k < 2; ++k)
+    threads.emplace_back([&, k] {
+      SmallSystemLu lu(&ordering);
+      RowMatrix A = lopsided(40, 0.3 + k);
+      solved[k] = lu.factorize(A, false) && lu.solve(b, shared[k]);
+    });
+  for (std::thread& t : threads) t.join();
+  for (int k = 0; k < 2; ++k) {
+    ASSERT_TRUE(solved[k]) << k;
+    EXPECT_EQ(shared[k], alone[k]) << k;  // the same ordering, so the same factors, bit for bit
+  }
+  SmallSystemLu other(&ordering);
+  RowMatrix smaller = lopsided(39, 0.3);
+  EXPECT_FALSE(other.factorize(smaller, false));
 }
