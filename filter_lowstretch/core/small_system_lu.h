@@ -11,8 +11,10 @@
 namespace lowstretch {
 
 // KLU's ordering of one pattern (its symbolic analysis), found by the first factorization among
-// the SmallSystemLu that share it, from any thread. KLU's factorizations and solves only read it,
-// so the maps of one mesh (an atlas maps a chart onto many rectangles) order its system once.
+// the SmallSystemLu that share it, from any thread. With AMD's ordering (KLU's default, kept here)
+// its factorizations and solves only read it (after COLAMD, klu_factor would write its own fill
+// estimate into it), so the maps of one mesh (an atlas maps a chart onto many rectangles) order
+// its system once.
 class LuOrdering {
  public:
   LuOrdering();
