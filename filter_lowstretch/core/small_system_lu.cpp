@@ -28,6 +28,7 @@ SmallSystemLu::SmallSystemLu(LuOrdering* shared)
       ordering_(shared ? shared : own_ordering_.get()) {
   klu_defaults(&klu_->common);
   klu_->common.btf = 0;  // a chart's system is one block: the search for more only costs time
+  klu_->common.ordering = 0;  // AMD: a shared ordering stays read-only (small_system_lu.h)
 }
 
 SmallSystemLu::~SmallSystemLu() {
