@@ -3,6 +3,8 @@
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/boykov_kolmogorov_max_flow.hpp>
 
+#include "atlas/cut/seam_path.h"
+
 namespace lowstretch {
 
 namespace {
@@ -17,8 +19,8 @@ using FlowGraph = boost::adjacency_list<
 
 }  // namespace
 
-std::vector<char> cheapest_seam(const std::vector<std::array<int, 3>>& neighbour, const std::vector<std::array<double, 3>>& cost,
-                                const std::vector<signed char>& fixed) {
+std::vector<char> cheapest_seam_by_max_flow(const std::vector<std::array<int, 3>>& neighbour,
+                                            const std::vector<std::array<double, 3>>& cost, const std::vector<signed char>& fixed) {
   const size_t n = fixed.size();
   // Graph nodes: 0 the faces fixed on side 1 (the source), 1 those on side 0 (the sink), then one
   // per free face.
@@ -49,6 +51,13 @@ std::vector<char> cheapest_seam(const std::vector<std::array<int, 3>>& neighbour
   for (size_t i = 0; i < n; ++i)
     if (node[i] >= 2) side[i] = colour[size_t(node[i])] == boost::black_color;
   return side;
+}
+
+std::vector<char> cheapest_seam(const std::vector<std::array<int, 3>>& corners, const std::vector<std::array<int, 3>>& neighbour,
+                                const std::vector<std::array<double, 3>>& cost, const std::vector<signed char>& fixed) {
+  std::vector<char> side;
+  if (cheapest_seam_as_path(corners, neighbour, cost, fixed, side)) return side;
+  return cheapest_seam_by_max_flow(neighbour, cost, fixed);
 }
 
 }  // namespace lowstretch

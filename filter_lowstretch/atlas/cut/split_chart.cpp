@@ -19,6 +19,7 @@ namespace {
 struct FaceGraph {
   std::vector<Eigen::Vector3d> centroid, normal;
   std::vector<double> area;
+  std::vector<std::array<int, 3>> corner;     // the face's vertices (rows of V)
   std::vector<std::array<int, 3>> neighbour;  // local face, -1 across the chart's border
   std::vector<std::array<double, 3>> cost;    // seam cost of that edge
 };
@@ -32,6 +33,7 @@ FaceGraph face_graph(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const s
   for (int f : faces) {
     const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
     const Eigen::Vector3d n = (b - a).cross(c - a);
+    g.corner.push_back({F(f, 0), F(f, 1), F(f, 2)});
     g.centroid.push_back((a + b + c) / 3);
     g.area.push_back(0.5 * n.norm());
     g.normal.push_back(n.norm() > 0 ? Eigen::Vector3d(n.normalized()) : Eigen::Vector3d::Zero());
@@ -151,7 +153,7 @@ std::vector<char> side_of_cheapest_seam(const FaceGraph& g, const std::vector<do
   const double band = options.seam_band * extent;
   std::vector<signed char> fixed(n);
   for (size_t i = 0; i < n; ++i) fixed[i] = key(i) < level - band ? 1 : key(i) > level + band ? 0 : -1;
-  std::vector<char> side = cheapest_seam(g.neighbour, g.cost, fixed);
+  std::vector<char> side = cheapest_seam(g.corner, g.neighbour, g.cost, fixed);
   double below = 0, total = 0;
   for (size_t i = 0; i < n; ++i) below += side[i] ? g.area[i] : 0, total += g.area[i];
   return std::min(below, total - below) >= options.smallest_part * total ? side : level_set;
