@@ -4,6 +4,7 @@
 #include <functional>
 #include <limits>
 #include <queue>
+#include <unordered_map>
 #include <utility>
 
 namespace lowstretch {
@@ -30,32 +31,39 @@ struct BorderLoop {
   std::vector<int> vertex, face;
 };
 
-// The one border loop of a disk; empty where the faces are not one (a vertex two border edges
-// leave, more than one loop, or an Euler characteristic V - E + F other than 1).
-BorderLoop disk_border(const std::vector<int>& vertex_of, int vertices, const std::vector<std::array<int, 3>>& neighbour) {
-  const size_t n = neighbour.size();
-  std::vector<int> next(size_t(vertices), -1), face_after(size_t(vertices), -1);
-  size_t border = 0;
+// The corners (3 * face + k) that the border's edges leave from, in order along the one border
+// loop; empty where the border is not one loop (none, more than one, or a vertex two border edges
+// leave). Looks only at the border, so that the max flow's charts (holes, closed) cost little here.
+std::vector<int> one_border_loop(const Corners& corners, const std::vector<std::array<int, 3>>& neighbour) {
+  std::unordered_map<int, int> leaving;  // vertex -> the corner its border edge leaves from
   int start = -1;
-  for (size_t i = 0; i < n; ++i)
+  for (size_t i = 0; i < neighbour.size(); ++i)
     for (size_t k = 0; k < 3; ++k) {
       if (neighbour[i][k] >= 0) continue;
-      const int from = vertex_of[3 * i + k];
-      if (next[size_t(from)] >= 0) return {};
-      next[size_t(from)] = vertex_of[3 * i + (k + 1) % 3];
-      face_after[size_t(from)] = int(i);
-      start = from, ++border;
+      if (!leaving.emplace(corners[i][k], int(3 * i + k)).second) return {};
+      if (start < 0) start = int(3 * i + k);
     }
+  std::vector<int> loop;
+  for (int c = start; c >= 0 && loop.size() < leaving.size();) {
+    loop.push_back(c);
+    const auto next = leaving.find(corners[size_t(c) / 3][(size_t(c) % 3 + 1) % 3]);
+    c = next == leaving.end() ? -1 : next->second;
+    if (c == start) return loop.size() == leaving.size() ? loop : std::vector<int>{};
+  }
+  return {};
+}
+
+// The loop by local vertex, or empty unless the faces are a disk: Euler characteristic
+// V - E + F = 1 with one border loop.
+BorderLoop disk_border(const std::vector<int>& loop_corners, const std::vector<int>& vertex_of, int vertices) {
+  const size_t n = vertex_of.size() / 3, border = loop_corners.size();
   const long edges = long(3 * n + border) / 2;  // each inner edge seen from both faces
-  if (border == 0 || (3 * n + border) % 2 != 0 || long(vertices) - edges + long(n) != 1) return {};
+  if ((3 * n + border) % 2 != 0 || long(vertices) - edges + long(n) != 1) return {};
   BorderLoop loop;
-  int v = start;
-  do {
-    loop.vertex.push_back(v);
-    loop.face.push_back(face_after[size_t(v)]);
-    v = next[size_t(v)];
-  } while (v >= 0 && v != start && loop.vertex.size() <= border);
-  if (v != start || loop.vertex.size() != border) return {};
+  for (const int c : loop_corners) {
+    loop.vertex.push_back(vertex_of[size_t(c)]);
+    loop.face.push_back(c / 3);
+  }
   return loop;
 }
 
@@ -188,9 +196,11 @@ bool sides_beside(const std::vector<int>& path, const std::vector<int>& vertex_o
 bool cheapest_seam_as_path(const Corners& corners, const std::vector<std::array<int, 3>>& neighbour,
                            const std::vector<std::array<double, 3>>& cost, const std::vector<signed char>& fixed,
                            std::vector<char>& side) {
+  const std::vector<int> loop_corners = one_border_loop(corners, neighbour);
+  if (loop_corners.empty()) return false;
   int vertices = 0;
   const std::vector<int> vertex_of = local_vertices(corners, vertices);
-  const BorderLoop loop = disk_border(vertex_of, vertices, neighbour);
+  const BorderLoop loop = disk_border(loop_corners, vertex_of, vertices);
   std::vector<char> arc(size_t(vertices), 0);
   if (loop.face.empty() || !mark_arcs(loop, fixed, arc)) return false;
   double length = 0;
