@@ -143,13 +143,20 @@ TEST(CheapestSeam, ShortestPathCostsWhatTheMaxFlowDoes) {
   }
 }
 
-// No path where the chart is not a disk (a punched hole) or the faces fixed on one side do not
-// meet the border (an island in the middle): `side` is left alone, and cheapest_seam takes the max
-// flow's seam there, which closes around the island (a ring of six edges at least).
+// No path where the chart is not a disk (a punched hole, a closed sphere) or the faces fixed on
+// one side do not meet the border (an island in the middle): `side` is left alone, and
+// cheapest_seam takes the max flow's seam there, which closes around the island (a ring of six
+// edges at least).
 TEST(CheapestSeam, NoPathAroundAHoleOrAnIslandTheMaxFlowCuts) {
   const testmesh::Mesh punched = testmesh::punched_grid(20, {Eigen::RowVector2d(0.5, 0.5)}, 0.15);
   const testmesh::Mesh plain = testmesh::grid(20);
-  const Adjacency holed = adjacency(punched), whole = adjacency(plain);
+  const testmesh::Mesh sphere = testmesh::sphere(12, 16);
+  const Adjacency holed = adjacency(punched), whole = adjacency(plain), closed = adjacency(sphere);
+  std::vector<signed char> poles(size_t(sphere.F.rows()), -1);
+  for (int f = 0; f < int(sphere.F.rows()); ++f) {
+    const double z = (sphere.V(sphere.F(f, 0), 2) + sphere.V(sphere.F(f, 1), 2) + sphere.V(sphere.F(f, 2), 2)) / 3;
+    poles[size_t(f)] = z > 0.5 ? 1 : z < -0.5 ? 0 : -1;
+  }
   std::vector<signed char> island(size_t(plain.F.rows()), -1);
   for (int f = 0; f < int(plain.F.rows()); ++f) {
     const Eigen::RowVector3d c = (plain.V.row(plain.F(f, 0)) + plain.V.row(plain.F(f, 1)) + plain.V.row(plain.F(f, 2))) / 3;
@@ -159,7 +166,7 @@ TEST(CheapestSeam, NoPathAroundAHoleOrAnIslandTheMaxFlowCuts) {
   const struct {
     const Adjacency& a;
     std::vector<signed char> fixed;
-  } cases[] = {{holed, fixed_by_level(punched, 1, 0, 0.2, 0.8)}, {whole, island}};
+  } cases[] = {{holed, fixed_by_level(punched, 1, 0, 0.2, 0.8)}, {whole, island}, {closed, poles}};
   for (const auto& c : cases) {
     std::vector<char> side(3, 7);
     EXPECT_FALSE(cheapest_seam_as_path(c.a.corners, c.a.neighbour, c.a.length, c.fixed, side));
