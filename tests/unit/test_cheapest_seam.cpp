@@ -125,33 +125,38 @@ void expect_fixed_kept(const std::vector<signed char>& fixed, const std::vector<
 
 }  // namespace
 
-// On a bumpy grid (seam costs vary), bands across it at several slopes and widths: the shortest
-// path between the border arcs is found, and its seam costs what Boykov-Kolmogorov's minimum cut
-// costs, every fixed face on its side.
+// On a bumpy grid (seam costs vary), and on it with two holes in the band, bands across it at
+// several slopes and widths: the shortest path between the border arcs is found (through a hole
+// where that is cheaper), and its seam costs what Boykov-Kolmogorov's minimum cut costs, every
+// fixed face on its side.
 TEST(CheapestSeam, ShortestPathCostsWhatTheMaxFlowDoes) {
-  const testmesh::Mesh m = testmesh::grid(30, [](double x, double y) { return 0.15 * std::sin(9 * x) * std::cos(7 * y + 3 * x); });
-  const Adjacency a = adjacency(m);
+  const auto bumps = [](double x, double y) { return 0.15 * std::sin(9 * x) * std::cos(7 * y + 3 * x); };
+  testmesh::Mesh holed = testmesh::punched_grid(30, {Eigen::RowVector2d(0.5, 0.35), Eigen::RowVector2d(0.45, 0.75)}, 0.12);
+  for (int v = 0; v < int(holed.V.rows()); ++v) holed.V(v, 2) = bumps(holed.V(v, 0), holed.V(v, 1));
   const double bands[][4] = {{1, 0, 0.3, 0.7}, {1, 0.5, 0.2, 0.9}, {1, -1, -0.4, 0.3}, {0.3, 1, 0.45, 0.55}, {1, 1, 0.2, 1.7}};
-  for (const auto& b : bands) {
-    const std::vector<signed char> fixed = fixed_by_level(m, b[0], b[1], b[2], b[3]);
-    std::vector<char> by_path;
-    ASSERT_TRUE(cheapest_seam_as_path(a.corners, a.neighbour, a.length, fixed, by_path)) << "band " << b[0] << " " << b[1];
-    const std::vector<char> by_flow = cheapest_seam_by_max_flow(a.neighbour, a.length, fixed);
-    EXPECT_NEAR(seam_length(a, by_path), seam_length(a, by_flow), 1e-9 * seam_length(a, by_flow));
-    EXPECT_GT(seam_length(a, by_path), 0.25);  // the corner band x + y < 0.2 cuts off least
-    expect_fixed_kept(fixed, by_path);
+  for (const testmesh::Mesh& m : {testmesh::grid(30, bumps), holed}) {
+    const Adjacency a = adjacency(m);
+    for (const auto& b : bands) {
+      const std::vector<signed char> fixed = fixed_by_level(m, b[0], b[1], b[2], b[3]);
+      std::vector<char> by_path;
+      ASSERT_TRUE(cheapest_seam_as_path(a.corners, a.neighbour, a.length, fixed, by_path)) << "band " << b[0] << " " << b[1];
+      const std::vector<char> by_flow = cheapest_seam_by_max_flow(a.neighbour, a.length, fixed);
+      EXPECT_NEAR(seam_length(a, by_path), seam_length(a, by_flow), 1e-9 * seam_length(a, by_flow));
+      EXPECT_GT(seam_length(a, by_path), 0.2);  // the corner band x + y < 0.2 cuts off least
+      expect_fixed_kept(fixed, by_path);
+    }
   }
 }
 
-// No path where the chart is not a disk (a punched hole, a closed sphere) or the faces fixed on
-// one side do not meet the border (an island in the middle): `side` is left alone, and
-// cheapest_seam takes the max flow's seam there, which closes around the island (a ring of six
-// edges at least).
+// No path where the chart is not of genus 0 (a torus with a face taken out, a closed sphere) or
+// the faces fixed on one side do not meet the border (an island in the middle): `side` is left
+// alone, and cheapest_seam takes the max flow's seam there, which closes around the island (a
+// ring of six edges at least).
 TEST(CheapestSeam, NoPathAroundAHoleOrAnIslandTheMaxFlowCuts) {
-  const testmesh::Mesh punched = testmesh::punched_grid(20, {Eigen::RowVector2d(0.5, 0.5)}, 0.15);
+  const testmesh::Mesh handle = testmesh::without_face(testmesh::torus(10, 16), 0);
   const testmesh::Mesh plain = testmesh::grid(20);
   const testmesh::Mesh sphere = testmesh::sphere(12, 16);
-  const Adjacency holed = adjacency(punched), whole = adjacency(plain), closed = adjacency(sphere);
+  const Adjacency torus = adjacency(handle), whole = adjacency(plain), closed = adjacency(sphere);
   std::vector<signed char> poles(size_t(sphere.F.rows()), -1);
   for (int f = 0; f < int(sphere.F.rows()); ++f) {
     const double z = (sphere.V(sphere.F(f, 0), 2) + sphere.V(sphere.F(f, 1), 2) + sphere.V(sphere.F(f, 2), 2)) / 3;
@@ -166,7 +171,7 @@ TEST(CheapestSeam, NoPathAroundAHoleOrAnIslandTheMaxFlowCuts) {
   const struct {
     const Adjacency& a;
     std::vector<signed char> fixed;
-  } cases[] = {{holed, fixed_by_level(punched, 1, 0, 0.2, 0.8)}, {whole, island}, {closed, poles}};
+  } cases[] = {{torus, fixed_by_level(handle, 1, 0, -1, 1)}, {whole, island}, {closed, poles}};
   for (const auto& c : cases) {
     std::vector<char> side(3, 7);
     EXPECT_FALSE(cheapest_seam_as_path(c.a.corners, c.a.neighbour, c.a.length, c.fixed, side));

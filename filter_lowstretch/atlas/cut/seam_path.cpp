@@ -31,40 +31,51 @@ struct BorderLoop {
   std::vector<int> vertex, face;
 };
 
-// The corners (3 * face + k) that the border's edges leave from, in order along the one border
-// loop; empty where the border is not one loop (none, more than one, or a vertex two border edges
-// leave). Looks only at the border, so that the max flow's charts (holes, closed) cost little here.
-std::vector<int> one_border_loop(const Corners& corners, const std::vector<std::array<int, 3>>& neighbour) {
+// The border's loops, each as the corners (3 * face + k) its edges leave from, in order; none
+// where a vertex has two border edges leaving it or a border edge leads to none. Looks only at the
+// border, so that closed charts (which the max flow takes) cost little here.
+std::vector<std::vector<int>> border_loops(const Corners& corners, const std::vector<std::array<int, 3>>& neighbour) {
   std::unordered_map<int, int> leaving;  // vertex -> the corner its border edge leaves from
-  int start = -1;
+  std::vector<int> starts;
   for (size_t i = 0; i < neighbour.size(); ++i)
     for (size_t k = 0; k < 3; ++k) {
       if (neighbour[i][k] >= 0) continue;
       if (!leaving.emplace(corners[i][k], int(3 * i + k)).second) return {};
-      if (start < 0) start = int(3 * i + k);
+      starts.push_back(int(3 * i + k));
     }
-  std::vector<int> loop;
-  for (int c = start; c >= 0 && loop.size() < leaving.size();) {
-    loop.push_back(c);
-    const auto next = leaving.find(corners[size_t(c) / 3][(size_t(c) % 3 + 1) % 3]);
-    c = next == leaving.end() ? -1 : next->second;
-    if (c == start) return loop.size() == leaving.size() ? loop : std::vector<int>{};
+  std::vector<char> seen(3 * neighbour.size(), 0);
+  std::vector<std::vector<int>> loops;
+  for (const int start : starts) {
+    if (seen[size_t(start)]) continue;
+    std::vector<int> loop;
+    for (int c = start; !seen[size_t(c)];) {
+      seen[size_t(c)] = 1;
+      loop.push_back(c);
+      const auto next = leaving.find(corners[size_t(c) / 3][(size_t(c) % 3 + 1) % 3]);
+      if (next == leaving.end()) return {};
+      c = next->second;
+    }
+    loops.push_back(std::move(loop));
   }
-  return {};
+  return loops;
 }
 
-// The loop by local vertex, or empty unless the faces are a disk: Euler characteristic
-// V - E + F = 1 with one border loop.
-BorderLoop disk_border(const std::vector<int>& loop_corners, const std::vector<int>& vertex_of, int vertices) {
-  const size_t n = vertex_of.size() / 3, border = loop_corners.size();
+// The loops by local vertex, or none unless the faces are of genus 0: Euler characteristic
+// V - E + F = 2 - (the number of border loops).
+std::vector<BorderLoop> genus_zero_border(const std::vector<std::vector<int>>& loop_corners, const std::vector<int>& vertex_of,
+                                          int vertices) {
+  const size_t n = vertex_of.size() / 3;
+  size_t border = 0;
+  for (const auto& l : loop_corners) border += l.size();
   const long edges = long(3 * n + border) / 2;  // each inner edge seen from both faces
-  if ((3 * n + border) % 2 != 0 || long(vertices) - edges + long(n) != 1) return {};
-  BorderLoop loop;
-  for (const int c : loop_corners) {
-    loop.vertex.push_back(vertex_of[size_t(c)]);
-    loop.face.push_back(c / 3);
-  }
-  return loop;
+  if ((3 * n + border) % 2 != 0 || long(vertices) - edges + long(n) != 2 - long(loop_corners.size())) return {};
+  std::vector<BorderLoop> loops(loop_corners.size());
+  for (size_t l = 0; l < loops.size(); ++l)
+    for (const int c : loop_corners[l]) {
+      loops[l].vertex.push_back(vertex_of[size_t(c)]);
+      loops[l].face.push_back(c / 3);
+    }
+  return loops;
 }
 
 // Marks the border's vertices between the run of faces fixed on side 1 and that on side 0: 1
@@ -94,35 +105,45 @@ bool mark_arcs(const BorderLoop& loop, const std::vector<signed char>& fixed, st
 }
 
 // The edges a seam may follow, from each vertex (compressed rows): inner edges not between two
-// faces fixed on one side, each with its half-edge (3 * face + k) and seam cost.
+// faces fixed on one side, each with its half-edge (3 * face + k) and seam cost; and, at no cost
+// (half-edge -1), the border edges of every loop but `outer`: a hole is one point that a seam
+// passes through, leaving it anywhere on its border.
 struct SeamEdges {
   std::vector<int> first, to, half;
   std::vector<double> cost;
 };
 
 SeamEdges seam_edges(const std::vector<int>& vertex_of, int vertices, const std::vector<std::array<int, 3>>& neighbour,
-                     const std::vector<std::array<double, 3>>& cost, const std::vector<signed char>& fixed) {
-  std::vector<std::array<int, 2>> half_of;  // (half-edge, direction) of each entry
-  std::vector<int> count(size_t(vertices) + 1, 0);
+                     const std::vector<std::array<double, 3>>& cost, const std::vector<signed char>& fixed,
+                     const std::vector<BorderLoop>& loops, size_t outer) {
+  struct Entry {
+    int from, to, half;
+    double cost;
+  };
+  std::vector<Entry> entries;
   for (size_t i = 0; i < neighbour.size(); ++i)
     for (size_t k = 0; k < 3; ++k) {
       const int j = neighbour[i][k];
       if (j <= int(i) || (fixed[i] >= 0 && fixed[i] == fixed[size_t(j)])) continue;  // each edge once
-      for (int direction = 0; direction < 2; ++direction) {
-        half_of.push_back({int(3 * i + k), direction});
-        ++count[size_t(vertex_of[3 * i + (k + size_t(direction)) % 3]) + 1];
-      }
+      const int a = vertex_of[3 * i + k], b = vertex_of[3 * i + (k + 1) % 3];
+      entries.push_back({a, b, int(3 * i + k), cost[i][k]});
+      entries.push_back({b, a, int(3 * i + k), cost[i][k]});
+    }
+  for (size_t l = 0; l < loops.size(); ++l)
+    for (size_t t = 0; l != outer && t < loops[l].vertex.size(); ++t) {
+      const int a = loops[l].vertex[t], b = loops[l].vertex[(t + 1) % loops[l].vertex.size()];
+      entries.push_back({a, b, -1, 0.0});
+      entries.push_back({b, a, -1, 0.0});
     }
   SeamEdges e;
   e.first.assign(size_t(vertices) + 1, 0);
-  for (size_t v = 0; v < size_t(vertices); ++v) e.first[v + 1] = e.first[v] + count[v + 1];
-  e.to.resize(half_of.size()), e.half.resize(half_of.size()), e.cost.resize(half_of.size());
+  for (const Entry& x : entries) ++e.first[size_t(x.from) + 1];
+  for (size_t v = 0; v < size_t(vertices); ++v) e.first[v + 1] += e.first[v];
+  e.to.resize(entries.size()), e.half.resize(entries.size()), e.cost.resize(entries.size());
   std::vector<int> filled(e.first.begin(), e.first.end() - 1);
-  for (const auto& h : half_of) {
-    const size_t i = size_t(h[0]) / 3, k = size_t(h[0]) % 3;
-    const int from = vertex_of[3 * i + (k + size_t(h[1])) % 3], to = vertex_of[3 * i + (k + 1 - size_t(h[1])) % 3];
-    const int at = filled[size_t(from)]++;
-    e.to[size_t(at)] = to, e.half[size_t(at)] = h[0], e.cost[size_t(at)] = cost[i][k];
+  for (const Entry& x : entries) {
+    const size_t at = size_t(filled[size_t(x.from)]++);
+    e.to[at] = x.to, e.half[at] = x.half, e.cost[at] = x.cost;
   }
   return e;
 }
@@ -155,7 +176,8 @@ std::vector<int> shortest_path(const SeamEdges& e, const std::vector<char>& arc,
   }
   length = end < 0 ? std::numeric_limits<double>::infinity() : distance[size_t(end)];
   std::vector<int> path;
-  for (int v = end; v >= 0 && via_half[size_t(v)] >= 0; v = via_vertex[size_t(v)]) path.push_back(via_half[size_t(v)]);
+  for (int v = end; v >= 0 && via_vertex[size_t(v)] >= 0; v = via_vertex[size_t(v)])
+    if (via_half[size_t(v)] >= 0) path.push_back(via_half[size_t(v)]);
   return path;
 }
 
@@ -196,15 +218,18 @@ bool sides_beside(const std::vector<int>& path, const std::vector<int>& vertex_o
 bool cheapest_seam_as_path(const Corners& corners, const std::vector<std::array<int, 3>>& neighbour,
                            const std::vector<std::array<double, 3>>& cost, const std::vector<signed char>& fixed,
                            std::vector<char>& side) {
-  const std::vector<int> loop_corners = one_border_loop(corners, neighbour);
+  const std::vector<std::vector<int>> loop_corners = border_loops(corners, neighbour);
   if (loop_corners.empty()) return false;
   int vertices = 0;
   const std::vector<int> vertex_of = local_vertices(corners, vertices);
-  const BorderLoop loop = disk_border(loop_corners, vertex_of, vertices);
+  const std::vector<BorderLoop> loops = genus_zero_border(loop_corners, vertex_of, vertices);
+  // The outer loop: the first that meets each side's fixed faces in one run.
   std::vector<char> arc(size_t(vertices), 0);
-  if (loop.face.empty() || !mark_arcs(loop, fixed, arc)) return false;
+  size_t outer = 0;
+  while (outer < loops.size() && !mark_arcs(loops[outer], fixed, arc)) ++outer;
+  if (outer == loops.size()) return false;
   double length = 0;
-  const std::vector<int> path = shortest_path(seam_edges(vertex_of, vertices, neighbour, cost, fixed), arc, length);
+  const std::vector<int> path = shortest_path(seam_edges(vertex_of, vertices, neighbour, cost, fixed, loops, outer), arc, length);
   std::vector<char> found;
   if (!(length < std::numeric_limits<double>::infinity()) || !sides_beside(path, vertex_of, neighbour, fixed, found)) return false;
   // The sides' seam is part of the path; more would mean the path did not separate them.
