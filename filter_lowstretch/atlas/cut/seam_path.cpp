@@ -78,16 +78,23 @@ std::vector<BorderLoop> genus_zero_border(const std::vector<std::vector<int>>& l
   return loops;
 }
 
-// Marks the border's vertices between the run of faces fixed on side 1 and that on side 0: 1
-// going from the first run to the second along the loop, 2 from the second to the first (ends
-// included). False unless each side's fixed faces meet the border in one run.
-bool mark_arcs(const BorderLoop& loop, const std::vector<signed char>& fixed, std::vector<char>& arc) {
-  const size_t m = loop.face.size();
-  const auto side_of_edge = [&](size_t t) { return fixed[size_t(loop.face[t % m])]; };
+// Whether a loop (its corners, as border_loops gives them) meets the faces fixed on each side in
+// one run of its edges.
+bool meets_each_side_once(const std::vector<int>& loop, const std::vector<signed char>& fixed) {
+  const size_t m = loop.size();
+  const auto side_of_edge = [&](size_t t) { return fixed[size_t(loop[t % m] / 3)]; };
   int runs[2] = {0, 0};
   for (size_t t = 0; t < m; ++t)
     if (side_of_edge(t) >= 0 && side_of_edge(t) != side_of_edge(t + m - 1)) ++runs[side_of_edge(t)];
-  if (runs[0] != 1 || runs[1] != 1) return false;
+  return runs[0] == 1 && runs[1] == 1;
+}
+
+// Marks the vertices of a loop that meets each side once between the run of faces fixed on side
+// 1 and that on side 0: 1 going from the first run to the second along the loop, 2 from the
+// second to the first (ends included).
+void mark_arcs(const BorderLoop& loop, const std::vector<signed char>& fixed, std::vector<char>& arc) {
+  const size_t m = loop.face.size();
+  const auto side_of_edge = [&](size_t t) { return fixed[size_t(loop.face[t % m])]; };
   // Per border vertex t: the side of the last fixed edge before it and of the first from it on.
   std::vector<signed char> before(m), after(m);
   signed char last = -1;
@@ -101,7 +108,6 @@ bool mark_arcs(const BorderLoop& loop, const std::vector<signed char>& fixed, st
   }
   for (size_t t = 0; t < m; ++t)
     arc[size_t(loop.vertex[t])] = before[t] == 1 && after[t] == 0 ? 1 : before[t] == 0 && after[t] == 1 ? 2 : 0;
-  return true;
 }
 
 // The edges a seam may follow, from each vertex (compressed rows): inner edges not between two
@@ -218,16 +224,18 @@ bool sides_beside(const std::vector<int>& path, const std::vector<int>& vertex_o
 bool cheapest_seam_as_path(const Corners& corners, const std::vector<std::array<int, 3>>& neighbour,
                            const std::vector<std::array<double, 3>>& cost, const std::vector<signed char>& fixed,
                            std::vector<char>& side) {
+  // The outer loop: the first that meets each side's fixed faces in one run (found from the
+  // border alone, before the chart's vertices are numbered: most charts the max flow takes fail here).
   const std::vector<std::vector<int>> loop_corners = border_loops(corners, neighbour);
-  if (loop_corners.empty()) return false;
+  size_t outer = 0;
+  while (outer < loop_corners.size() && !meets_each_side_once(loop_corners[outer], fixed)) ++outer;
+  if (outer == loop_corners.size()) return false;
   int vertices = 0;
   const std::vector<int> vertex_of = local_vertices(corners, vertices);
   const std::vector<BorderLoop> loops = genus_zero_border(loop_corners, vertex_of, vertices);
-  // The outer loop: the first that meets each side's fixed faces in one run.
+  if (loops.empty()) return false;
   std::vector<char> arc(size_t(vertices), 0);
-  size_t outer = 0;
-  while (outer < loops.size() && !mark_arcs(loops[outer], fixed, arc)) ++outer;
-  if (outer == loops.size()) return false;
+  mark_arcs(loops[outer], fixed, arc);
   double length = 0;
   const std::vector<int> path = shortest_path(seam_edges(vertex_of, vertices, neighbour, cost, fixed, loops, outer), arc, length);
   std::vector<char> found;
