@@ -2,8 +2,8 @@
 // loop meets the faces fixed on each side in one run each, every seam between them holds a path
 // along edges from one of the two border arcs between those runs to the other, through the holes
 // as through single points; the cheapest seam is the shortest such path (Dijkstra), found in
-// near-linear time where a max flow over a large band is not (Boykov-Kolmogorov took seconds on
-// charts of 100,000 free faces).
+// near-linear time where a max flow over a large band is not (Boykov-Kolmogorov's orphans
+// multiply as the band grows).
 #pragma once
 #include <array>
 #include <vector>
